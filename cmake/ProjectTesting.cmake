@@ -1,0 +1,22 @@
+# geoflow_add_test(NAME <name> LABEL unit|verification|regression SOURCES <src..> [LIBS <lib..>])
+# Builds one GoogleTest executable and registers its tests with CTest under the given label.
+find_package(GTest REQUIRED)
+include(GoogleTest)
+
+function(geoflow_add_test)
+  cmake_parse_arguments(T "" "NAME;LABEL" "SOURCES;LIBS" ${ARGN})
+  if(NOT T_LABEL MATCHES "^(unit|verification|regression)$")
+    message(FATAL_ERROR "geoflow_add_test(${T_NAME}): LABEL must be unit, verification or regression")
+  endif()
+  add_executable(${T_NAME} ${T_SOURCES})
+  set_target_properties(${T_NAME} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/tests)
+  target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} test_support GTest::gtest GTest::gtest_main geoflow_warnings)
+  target_compile_definitions(${T_NAME} PRIVATE
+    GEOFLOW_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    GEOFLOW_TEST_DATA_DIR="${PROJECT_SOURCE_DIR}/tests/data"
+    GEOFLOW_BIN_DIR="${CMAKE_BINARY_DIR}/bin")
+  gtest_discover_tests(${T_NAME}
+    PROPERTIES LABELS ${T_LABEL}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}
+    DISCOVERY_TIMEOUT 60)
+endfunction()

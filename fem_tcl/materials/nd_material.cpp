@@ -1,0 +1,1 @@
+#include "fem_tcl/materials/nd_material.hpp"

@@ -1,0 +1,160 @@
+#include "mpm/io/particle_table.hpp"
+
+#include <hdf5.h>
+#include <hdf5_hl.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+
+namespace mpm::io {
+namespace {
+
+static_assert(sizeof(ParticleRecord) == 416, "CB-Geo record size");
+static_assert(offsetof(ParticleRecord, cell_id) == 232, "CB-Geo cell_id offset");
+static_assert(offsetof(ParticleRecord, status) == 240, "CB-Geo status offset");
+static_assert(offsetof(ParticleRecord, svars) == 256, "CB-Geo svars offset");
+
+enum class MemberType { Int64, Float64, UInt8, UInt32 };
+
+struct Member {
+  std::string name;
+  std::size_t offset;
+  MemberType type;
+};
+
+// The schema, in the FILE's member order (status before cell_id).
+std::vector<Member> schema() {
+  std::vector<Member> m;
+  auto f64 = [&](const char* name, std::size_t off) { m.push_back({name, off, MemberType::Float64}); };
+#define GEOFLOW_F64(member) f64(#member, offsetof(ParticleRecord, member))
+  m.push_back({"id", offsetof(ParticleRecord, id), MemberType::Int64});
+  GEOFLOW_F64(mass); GEOFLOW_F64(volume); GEOFLOW_F64(pressure);
+  GEOFLOW_F64(coord_x); GEOFLOW_F64(coord_y); GEOFLOW_F64(coord_z);
+  GEOFLOW_F64(displacement_x); GEOFLOW_F64(displacement_y); GEOFLOW_F64(displacement_z);
+  GEOFLOW_F64(nsize_x); GEOFLOW_F64(nsize_y); GEOFLOW_F64(nsize_z);
+  GEOFLOW_F64(velocity_x); GEOFLOW_F64(velocity_y); GEOFLOW_F64(velocity_z);
+  GEOFLOW_F64(stress_xx); GEOFLOW_F64(stress_yy); GEOFLOW_F64(stress_zz);
+  GEOFLOW_F64(tau_xy); GEOFLOW_F64(tau_yz); GEOFLOW_F64(tau_xz);
+  GEOFLOW_F64(strain_xx); GEOFLOW_F64(strain_yy); GEOFLOW_F64(strain_zz);
+  GEOFLOW_F64(gamma_xy); GEOFLOW_F64(gamma_yz); GEOFLOW_F64(gamma_xz);
+  GEOFLOW_F64(epsilon_v);
+#undef GEOFLOW_F64
+  m.push_back({"status", offsetof(ParticleRecord, status), MemberType::UInt8});
+  m.push_back({"cell_id", offsetof(ParticleRecord, cell_id), MemberType::Int64});
+  m.push_back({"material_id", offsetof(ParticleRecord, material_id), MemberType::UInt32});
+  m.push_back({"nstate_vars", offsetof(ParticleRecord, nstate_vars), MemberType::UInt32});
+  for (std::size_t k = 0; k < kMaxStateVariables; ++k)
+    f64(("svars_" + std::to_string(k)).c_str(), offsetof(ParticleRecord, svars) + k * sizeof(double));
+  return m;
+}
+
+hid_t native_type(MemberType t) {
+  switch (t) {
+    case MemberType::Int64: return H5T_NATIVE_INT64;
+    case MemberType::Float64: return H5T_NATIVE_DOUBLE;
+    case MemberType::UInt8: return H5T_NATIVE_UINT8;
+    case MemberType::UInt32: return H5T_NATIVE_UINT32;
+  }
+  return H5T_NATIVE_DOUBLE;
+}
+
+/// Closes an HDF5 handle on scope exit.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { if (id_ >= 0) close_(id_); }
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+/// Silences HDF5's automatic error stack printing while alive (we report our own errors).
+class QuietHdf5 {
+ public:
+  QuietHdf5() { H5Eget_auto2(H5E_DEFAULT, &func_, &data_); H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
+}  // namespace
+
+void write_particle_table(const std::filesystem::path& file, std::span<const ParticleRecord> records) {
+  QuietHdf5 quiet;
+  const auto members = schema();
+  std::vector<const char*> names;
+  std::vector<std::size_t> offsets;
+  std::vector<hid_t> types;
+  for (const auto& m : members) {
+    names.push_back(m.name.c_str());
+    offsets.push_back(m.offset);
+    types.push_back(native_type(m.type));
+  }
+  const auto temporary = common::temporary_path_for(file);
+  {
+    Handle h5(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    if (!h5.valid()) throw std::runtime_error(file.string() + ": cannot create HDF5 file");
+    const hsize_t chunk = records.empty() ? 1 : std::min<hsize_t>(records.size(), 10000);
+    const herr_t status = H5TBmake_table("Table Title", h5.get(), "table", members.size(), records.size(),
+                                         sizeof(ParticleRecord), names.data(), offsets.data(), types.data(),
+                                         chunk, nullptr, 0, records.data());
+    if (status < 0) {
+      std::filesystem::remove(temporary);
+      throw std::runtime_error(file.string() + ": writing the particle table failed");
+    }
+  }
+  common::commit_file(temporary, file);
+}
+
+std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& file) {
+  QuietHdf5 quiet;
+  if (!std::filesystem::exists(file)) throw common::InputError(file.string(), "particle file not found");
+  Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!h5.valid()) throw common::InputError(file.string(), "not a readable HDF5 file");
+  Handle dset(H5Dopen2(h5.get(), "table", H5P_DEFAULT), H5Dclose);
+  if (!dset.valid()) throw common::InputError(file.string(), "no dataset \"/table\" (expected CB-Geo's particle table)");
+  Handle ftype(H5Dget_type(dset.get()), H5Tclose);
+  if (H5Tget_class(ftype.get()) != H5T_COMPOUND)
+    throw common::InputError(file.string(), "\"/table\" is not a compound dataset");
+  Handle space(H5Dget_space(dset.get()), H5Sclose);
+  if (H5Sget_simple_extent_ndims(space.get()) != 1)
+    throw common::InputError(file.string(), "\"/table\" must be one-dimensional");
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+
+  // Memory type matched by member name; every schema member must be in the file.
+  Handle mtype(H5Tcreate(H5T_COMPOUND, sizeof(ParticleRecord)), H5Tclose);
+  for (const auto& m : schema()) {
+    if (H5Tget_member_index(ftype.get(), m.name.c_str()) < 0)
+      throw common::InputError(file.string(), "particle table has no member \"" + m.name + "\"");
+    H5Tinsert(mtype.get(), m.name.c_str(), m.offset, native_type(m.type));
+  }
+  std::vector<ParticleRecord> records(n);
+  if (n > 0 && H5Dread(dset.get(), mtype.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, records.data()) < 0)
+    throw common::InputError(file.string(), "reading \"/table\" failed (truncated or corrupt file?)");
+  for (const auto& r : records) {
+    if (r.nstate_vars > kMaxStateVariables)
+      throw common::InputError(file.string(), "particle " + std::to_string(r.id) + ": nstate_vars " +
+                                                  std::to_string(r.nstate_vars) + " exceeds 20");
+  }
+  return records;
+}
+
+std::string particle_file_name(long long step, long long nsteps) {
+  const int digits = nsteps > 0 ? static_cast<int>(std::log10(static_cast<double>(nsteps))) + 1 : 1;
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "particles%0*lld.h5", digits, step);
+  return buffer;
+}
+
+}  // namespace mpm::io

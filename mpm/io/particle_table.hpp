@@ -1,0 +1,55 @@
+#pragma once
+// CB-Geo MPM's particle HDF5 table ("/table", 53 members, 416-byte records), defined once for the
+// writer (fem2mpm, mpm) and the reader (mpm resume). Schema: ../shared/FORMATS.md section 4, read
+// from CB-Geo's include/hdf5_particle.h. SI units, tension positive, engineering shear strains.
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace mpm::io {
+
+inline constexpr std::size_t kMaxStateVariables = 20;
+
+/// One particle as CB-Geo stores it. The byte layout matches CB-Geo's struct (cell_id before
+/// status in memory; in the file's member list status comes first). Value-initialise it
+/// (`ParticleRecord r{};`) so padding bytes are zero and files are byte-reproducible.
+struct ParticleRecord {
+  std::int64_t id = 0;
+  double mass = 0, volume = 0, pressure = 0;
+  double coord_x = 0, coord_y = 0, coord_z = 0;
+  double displacement_x = 0, displacement_y = 0, displacement_z = 0;
+  double nsize_x = 0, nsize_y = 0, nsize_z = 0;  ///< GIMP size in natural cell coordinates (2/ppd)
+  double velocity_x = 0, velocity_y = 0, velocity_z = 0;
+  double stress_xx = 0, stress_yy = 0, stress_zz = 0;  ///< Pa; stress_zz is the out-of-plane stress
+  double tau_xy = 0, tau_yz = 0, tau_xz = 0;
+  double strain_xx = 0, strain_yy = 0, strain_zz = 0;
+  double gamma_xy = 0, gamma_yz = 0, gamma_xz = 0;  ///< engineering shear strains
+  double epsilon_v = 0;
+  std::int64_t cell_id = -1;  ///< -1: the reader searches for the cell
+  std::uint8_t status = 1;    ///< 1: active
+  std::uint32_t material_id = 0;
+  std::uint32_t nstate_vars = 0;
+  double svars[kMaxStateVariables] = {};  ///< material state variables in the material's order
+};
+
+/// Number of members in the file's compound type.
+inline constexpr std::size_t kParticleTableMembers = 53;
+
+/// Writes `records` as CB-Geo's table (H5TB attributes, extendible chunked dataset "/table").
+/// The file is written to a temporary name and renamed, so a failed write leaves no file.
+/// Throws std::runtime_error naming the file on failure.
+void write_particle_table(const std::filesystem::path& file, std::span<const ParticleRecord> records);
+
+/// Reads a particle table written by CB-Geo, by this project, or by h5py with the same member
+/// names (members are matched by name, so member order in the file does not matter).
+/// Throws common::InputError naming the file and the missing member or the problem.
+std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& file);
+
+/// CB-Geo's output name for `step` of a run of `nsteps` steps: "particles" + step zero-padded to
+/// int(log10(nsteps)) + 1 digits + ".h5" (e.g. step 250 of 1001 -> "particles0250.h5").
+std::string particle_file_name(long long step, long long nsteps);
+
+}  // namespace mpm::io

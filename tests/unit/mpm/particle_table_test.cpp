@@ -1,0 +1,86 @@
+// Round trip of CB-Geo's particle table, and reading CB-Geo's own files (tests/data/reference_runs/cbgeo,
+// written by CB-Geo MPM develop 53fcb76; see that folder's README.md).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "common/input_error.hpp"
+#include "mpm/io/particle_table.hpp"
+
+namespace fs = std::filesystem;
+using mpm::io::ParticleRecord;
+
+namespace {
+fs::path scratch(const std::string& name) {
+  auto dir = fs::temp_directory_path() / ("geoflow_particle_table_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+}  // namespace
+
+TEST(ParticleTable, RoundTripKeepsEveryMember) {
+  std::vector<ParticleRecord> in(3);
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    auto& r = in[i];
+    r.id = static_cast<std::int64_t>(i);
+    r.mass = 1.5 + i; r.volume = 0.25; r.coord_x = 0.1 * i; r.coord_y = -2.0; r.nsize_x = r.nsize_y = 0.5;
+    r.velocity_x = 3.0; r.stress_xx = -1e5; r.stress_zz = -4e4; r.tau_xy = 17.0; r.gamma_xy = 1e-3;
+    r.cell_id = 42 + static_cast<std::int64_t>(i); r.status = 1; r.material_id = 7; r.nstate_vars = 7;
+    for (int k = 0; k < 20; ++k) r.svars[k] = k * 0.5 + i;
+  }
+  const auto file = scratch("roundtrip.h5");
+  mpm::io::write_particle_table(file, in);
+  EXPECT_FALSE(fs::exists(file.string() + ".tmp." + std::to_string(::getpid())));
+  const auto out = mpm::io::read_particle_table(file);
+  ASSERT_EQ(out.size(), in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    EXPECT_EQ(out[i].id, in[i].id);
+    EXPECT_EQ(out[i].mass, in[i].mass);
+    EXPECT_EQ(out[i].coord_x, in[i].coord_x);
+    EXPECT_EQ(out[i].stress_zz, in[i].stress_zz);
+    EXPECT_EQ(out[i].gamma_xy, in[i].gamma_xy);
+    EXPECT_EQ(out[i].cell_id, in[i].cell_id);
+    EXPECT_EQ(out[i].status, in[i].status);
+    EXPECT_EQ(out[i].material_id, in[i].material_id);
+    EXPECT_EQ(out[i].nstate_vars, in[i].nstate_vars);
+    EXPECT_EQ(out[i].svars[19], in[i].svars[19]);
+  }
+}
+
+TEST(ParticleTable, ReadsTheResumeFileOfTheCbGeoReferenceDeck) {
+  // particles000.h5 of resume_from_h5 was written by make_decks.py in CB-Geo's layout: 288 particles,
+  // volume (0.25/3)^2, mass 1200*volume, cell_id -1, status 1.
+  const fs::path file = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/cbgeo/resume_from_h5/results/bar_resume/particles000.h5";
+  const auto records = mpm::io::read_particle_table(file);
+  ASSERT_EQ(records.size(), 288u);
+  const double volume = (0.25 / 3) * (0.25 / 3);
+  EXPECT_NEAR(records[0].volume, volume, 1e-15);
+  EXPECT_NEAR(records[0].mass, 1200 * volume, 1e-12);
+  EXPECT_EQ(records[0].cell_id, -1);
+  EXPECT_EQ(records[0].status, 1);
+  EXPECT_NEAR(records[0].nsize_x, 2.0 / 3.0, 1e-12);
+}
+
+TEST(ParticleTable, MissingFileIsAnInputErrorNamingTheFile) {
+  try {
+    mpm::io::read_particle_table("/nonexistent/particles000.h5");
+    FAIL() << "expected an InputError";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/particles000.h5"), std::string::npos);
+  }
+}
+
+TEST(ParticleTable, GarbageFileIsAnInputError) {
+  const auto file = scratch("garbage.h5");
+  std::ofstream(file) << "not hdf5";
+  EXPECT_THROW(mpm::io::read_particle_table(file), common::InputError);
+}
+
+TEST(ParticleTable, FileNameIsZeroPaddedLikeCbGeo) {
+  EXPECT_EQ(mpm::io::particle_file_name(250, 1001), "particles0250.h5");
+  EXPECT_EQ(mpm::io::particle_file_name(0, 201), "particles000.h5");
+  EXPECT_EQ(mpm::io::particle_file_name(5000, 5001), "particles5000.h5");
+  EXPECT_EQ(mpm::io::particle_file_name(7, 9), "particles7.h5");
+}
