@@ -1,0 +1,87 @@
+#include "common/command_args.hpp"
+
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+
+namespace common {
+
+const std::string& CommandArgs::peek() const {
+  static const std::string none;
+  return empty() ? none : words_[next_];
+}
+
+void CommandArgs::fail(const std::string& what) const {
+  throw InputError(command_, usage_.empty() ? what : what + "; usage: " + usage_);
+}
+
+std::string CommandArgs::word(std::string_view what) {
+  if (empty()) fail("missing " + std::string(what));
+  return words_[next_++];
+}
+
+std::optional<double> CommandArgs::parse_number(std::string_view text) {
+  if (text.empty()) return std::nullopt;
+  const std::string s(text);
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(s.c_str(), &end);
+  while (end && (*end == ' ' || *end == '\t')) ++end;
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE) return std::nullopt;
+  return value;
+}
+
+std::optional<int> CommandArgs::parse_integer(std::string_view text) {
+  if (text.empty()) return std::nullopt;
+  const std::string s(text);
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol(s.c_str(), &end, 10);
+  while (end && (*end == ' ' || *end == '\t')) ++end;
+  if (end == s.c_str() || *end != '\0' || errno == ERANGE || value < INT_MIN || value > INT_MAX) return std::nullopt;
+  return static_cast<int>(value);
+}
+
+int CommandArgs::integer(std::string_view what) {
+  if (empty()) fail("missing " + std::string(what) + " (an integer)");
+  const auto value = parse_integer(words_[next_]);
+  if (!value) fail("expected " + std::string(what) + " (an integer), got '" + words_[next_] + "'");
+  ++next_;
+  return *value;
+}
+
+double CommandArgs::number(std::string_view what) {
+  if (empty()) fail("missing " + std::string(what) + " (a number)");
+  const auto value = parse_number(words_[next_]);
+  if (!value) fail("expected " + std::string(what) + " (a number), got '" + words_[next_] + "'");
+  ++next_;
+  return *value;
+}
+
+bool CommandArgs::flag(std::string_view flag) {
+  if (!empty() && words_[next_] == flag) {
+    ++next_;
+    return true;
+  }
+  return false;
+}
+
+std::optional<double> CommandArgs::optional_number() {
+  if (empty()) return std::nullopt;
+  auto value = parse_number(words_[next_]);
+  if (value) ++next_;
+  return value;
+}
+
+std::optional<int> CommandArgs::optional_integer() {
+  if (empty()) return std::nullopt;
+  auto value = parse_integer(words_[next_]);
+  if (value) ++next_;
+  return value;
+}
+
+void CommandArgs::expect_end() const {
+  if (!empty()) fail("unexpected argument '" + words_[next_] + "'");
+}
+
+}  // namespace common

@@ -1,0 +1,94 @@
+#pragma once
+// A parsed MPM input deck: what mpm/io reads from a CB-Geo-style mpm.json (+ mesh, particles, entity
+// sets, stresses, or the resume HDF5 file) and what mpm/core builds a simulation from. Plain data, SI
+// units, angles in radians, everything already validated by the reader (the core only asserts).
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "mpm/io/particle_table.hpp"
+
+namespace mpm::io {
+
+enum class CellType { Linear4 /* ED2Q4 */, Gimp16 /* ED2Q16G */ };
+enum class Scheme { USF, USL, MUSL };
+
+/// A uniform rectangular node lattice. Node (i, j) sits at (x0 + i*hx, y0 + j*hy) and has index
+/// i + j*nodes_x. For GIMP decks the lattice includes CB-Geo's halo ring of nodes.
+struct Grid {
+  double x0 = 0, y0 = 0;  ///< coordinates of node (0, 0), m
+  double hx = 1, hy = 1;  ///< cell size, m
+  int nodes_x = 0, nodes_y = 0;
+  CellType cell_type = CellType::Linear4;
+  /// The region covered by the mesh file's cells (where particles may be); outside it a particle
+  /// has left the grid.
+  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+};
+
+/// CB-Geo velocity constraint: velocity component `dir` (0 = x, 1 = y) fixed to `velocity` on `nodes`.
+struct VelocityConstraint {
+  std::vector<int> nodes;  ///< lattice node indices
+  int dir = 0;
+  double velocity = 0;
+};
+
+/// CB-Geo friction constraint (FORMATS.md section 5): boundary normal along `dir`, outward sign
+/// `sign_n`, Coulomb coefficient `friction`.
+struct FrictionConstraint {
+  std::vector<int> nodes;
+  int dir = 1;
+  int sign_n = -1;
+  double friction = 0;
+};
+
+enum class MaterialType { LinearElastic2D, MohrCoulomb2D };
+
+/// CB-Geo material parameters (angles converted to radians by the reader).
+struct MaterialSpec {
+  unsigned id = 0;
+  MaterialType type = MaterialType::LinearElastic2D;
+  double density = 0, youngs_modulus = 0, poisson_ratio = 0;
+  // MohrCoulomb2D only:
+  double friction = 0, dilation = 0, cohesion = 0;
+  double residual_friction = 0, residual_dilation = 0, residual_cohesion = 0;
+  double peak_pdstrain = 0, residual_pdstrain = 0;
+  double tension_cutoff = 0;
+  bool softening = false;
+};
+
+struct Analysis {
+  Scheme scheme = Scheme::USF;
+  bool velocity_update = false;  ///< true: PIC (CB-Geo), false: FLIP
+  double pic_blend = 0.0;        ///< extension: 0 = pure FLIP, 1 = pure PIC
+  bool locate_particles = true;  ///< true: a particle leaving the grid is an error; false: it is removed
+  double dt = 0;                 ///< s; with cfl > 0 the engine chooses dt and this is the upper bound
+  double cfl = 0;                ///< extension: automatic dt = cfl * h / c_p when > 0
+  long long nsteps = 0;
+  double cundall_damping = 0;    ///< Cundall local damping factor (0 = none)
+  Eigen::Vector2d gravity = Eigen::Vector2d::Zero();
+  std::string stress_smoothing = "none";  ///< extension: checkerboard remedy ("none" or a named method)
+};
+
+struct Output {
+  std::filesystem::path path;  ///< results folder (CB-Geo post_processing.path, relative to the working dir)
+  std::string uuid;            ///< run name: outputs go to path/uuid/
+  long long output_steps = 100;
+};
+
+struct Deck {
+  std::filesystem::path working_dir;  ///< the -f folder
+  Grid grid;
+  std::vector<VelocityConstraint> velocity_constraints;
+  std::vector<FrictionConstraint> friction_constraints;
+  std::vector<MaterialSpec> materials;
+  /// Initial particles. Records with volume <= 0 get CB-Geo's defaults from the engine: volume = cell
+  /// area / particles in that cell, mass = density * volume, nsize = 2 / sqrt(particles in the cell).
+  std::vector<ParticleRecord> particles;
+  Analysis analysis;
+  Output output;
+  bool resumed = false;         ///< particles came from a resume file
+  long long first_step = 0;     ///< the first loop step to run (resume step + 1 when resumed)
+};
+
+}  // namespace mpm::io
