@@ -1,0 +1,25 @@
+#include "fem_tcl/materials/material_registry.hpp"
+
+#include <array>
+
+#include "fem_tcl/materials/elastic_isotropic.hpp"
+
+namespace fem::materials {
+
+namespace {
+// One line per material type (add a line here and the sources to CMakeLists.txt).
+constexpr std::array kParsers{
+    MaterialParserEntry{"ElasticIsotropic", parse_elastic_isotropic},
+};
+}  // namespace
+
+std::span<const MaterialParserEntry> nd_material_parsers() { return kParsers; }
+
+MaterialParser find_nd_material_parser(std::string_view type) {
+  for (const auto& entry : nd_material_parsers()) {
+    if (entry.type == type) return entry.parse;
+  }
+  return nullptr;
+}
+
+}  // namespace fem::materials
