@@ -1,0 +1,330 @@
+#include "constitutive/mohr_coulomb.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace constitutive {
+namespace {
+
+// Yield planes in sorted principal space (s1 >= s2 >= s3), each  m . s <= r, with plastic flow along n
+// ([SPO] eqs. (8.40)-(8.44); [CDA] sec. 3):
+//   0 main  (s1, s3)   m = (1+sin phi, 0, -(1-sin phi)),  r = 2 c cos phi
+//   1 TC    (s2, s3)   m = (0, 1+sin phi, -(1-sin phi))   -- coincides with main on s1 = s2
+//   2 TE    (s1, s2)   m = (1+sin phi, -(1-sin phi), 0)   -- coincides with main on s2 = s3
+//   3..5 Rankine       m = n = e_i,                 r = T
+constexpr int kMain = 0, kTC = 1, kTE = 2, kT1 = 3, kT2 = 4, kT3 = 5;
+
+struct Planes {
+  std::array<Eigen::Vector3d, 6> m;
+  std::array<Eigen::Vector3d, 6> dn;  ///< D n (stress correction per unit multiplier)
+  std::array<double, 6> r;
+  bool tension = false;  ///< Rankine planes active (T below the apex)
+  bool apex = false;     ///< the pyramid has an apex (phi > 0)
+  double apex_stress = 0.0;
+};
+
+Eigen::Matrix3d principal_elasticity(const IsotropicElasticity& el) {
+  const double lambda = el.bulk_modulus - 2.0 * el.shear_modulus / 3.0;
+  Eigen::Matrix3d d = Eigen::Matrix3d::Constant(lambda);
+  d.diagonal().array() += 2.0 * el.shear_modulus;
+  return d;
+}
+
+Planes make_planes(const IsotropicElasticity& el, const MohrCoulombStrength& st) {
+  Planes p;
+  const Eigen::Matrix3d d = principal_elasticity(el);
+  const double sf = std::sin(st.friction), cf = std::cos(st.friction), sd = std::sin(st.dilation);
+  const double r_shear = 2.0 * st.cohesion * cf;
+  p.m[kMain] = {1.0 + sf, 0.0, -(1.0 - sf)};
+  p.m[kTC] = {0.0, 1.0 + sf, -(1.0 - sf)};
+  p.m[kTE] = {1.0 + sf, -(1.0 - sf), 0.0};
+  const Eigen::Vector3d n_main(1.0 + sd, 0.0, -(1.0 - sd));
+  const Eigen::Vector3d n_tc(0.0, 1.0 + sd, -(1.0 - sd));
+  const Eigen::Vector3d n_te(1.0 + sd, -(1.0 - sd), 0.0);
+  p.dn[kMain] = d * n_main;
+  p.dn[kTC] = d * n_tc;
+  p.dn[kTE] = d * n_te;
+  p.r[kMain] = p.r[kTC] = p.r[kTE] = r_shear;
+  p.apex = sf > 0.0;
+  p.apex_stress = p.apex ? st.cohesion * cf / sf : std::numeric_limits<double>::infinity();
+  // Rankine cutoff clamped at the apex: at or above it the pyramid already bounds s1 ([CDA] sec. 5).
+  const double t = st.tension_cutoff;
+  p.tension = std::isfinite(t) && t < p.apex_stress;
+  for (int i = 0; i < 3; ++i) {
+    p.m[kT1 + i] = Eigen::Vector3d::Unit(i);
+    p.dn[kT1 + i] = d.col(i);
+    p.r[kT1 + i] = p.tension ? t : std::numeric_limits<double>::infinity();
+  }
+  return p;
+}
+
+/// The sorted principal values of a plane-strain stress and how to put them back.
+struct Spectral {
+  Eigen::Vector3d sorted;  ///< s1 >= s2 >= s3
+  std::array<int, 3> slot; ///< slot[i]: 0 = in-plane major (a), 1 = in-plane minor (b), 2 = szz, for sorted i
+  double radius;           ///< in-plane Mohr circle radius R = (a - b) / 2
+  double cos2, sin2;       ///< direction of the in-plane major axis, cos 2 alpha and sin 2 alpha
+};
+
+Spectral decompose(const PlaneStrainStress& s) {
+  Spectral sp;
+  const double center = 0.5 * (s[0] + s[1]);
+  const double half = 0.5 * (s[0] - s[1]);
+  sp.radius = std::hypot(half, s[3]);
+  if (sp.radius > 0.0) {
+    sp.cos2 = half / sp.radius;
+    sp.sin2 = s[3] / sp.radius;
+  } else {
+    sp.cos2 = 1.0;
+    sp.sin2 = 0.0;
+  }
+  const double a = center + sp.radius, b = center - sp.radius, z = s[2];
+  if (z >= a) {
+    sp.sorted = {z, a, b};
+    sp.slot = {2, 0, 1};
+  } else if (z >= b) {
+    sp.sorted = {a, z, b};
+    sp.slot = {0, 2, 1};
+  } else {
+    sp.sorted = {a, b, z};
+    sp.slot = {0, 1, 2};
+  }
+  return sp;
+}
+
+PlaneStrainStress recompose(const Spectral& sp, const Eigen::Vector3d& sorted) {
+  Eigen::Vector3d abz;
+  for (int i = 0; i < 3; ++i) abz[sp.slot[i]] = sorted[i];
+  const double center = 0.5 * (abz[0] + abz[1]);
+  const double radius = 0.5 * (abz[0] - abz[1]);
+  return {center + radius * sp.cos2, center - radius * sp.cos2, abz[2], radius * sp.sin2};
+}
+
+struct PrincipalResult {
+  Eigen::Vector3d stress;
+  ReturnRegion region;
+  std::array<int, 3> active;  ///< active plane ids (first `count`)
+  int count;                  ///< 0 = elastic; -1 = a vertex reached through a 3-plane set or the apex
+};
+
+/// One active-set candidate: solve sum_l (m_j . D n_l) dgamma_l = m_j . s_trial - r_j ([SPO] eq. (8.47),
+/// [CDA] eq. (18)-(27)), then check dgamma >= 0, the principal order and every other plane.
+/// Returns the violation measure (<= 0 when admissible); the stress in `out`.
+double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* ids, int k, double tol,
+                      double gamma_scale, Eigen::Vector3d& out) {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  double amax = 0.0;
+  for (int j = 0; j < k; ++j) {
+    b[j] = p.m[ids[j]].dot(trial) - p.r[ids[j]];
+    for (int l = 0; l < k; ++l) {
+      a(j, l) = p.m[ids[j]].dot(p.dn[ids[l]]);
+      amax = std::max(amax, std::abs(a(j, l)));
+    }
+  }
+  const double det = a.determinant();
+  if (!(std::abs(det) > 1e-12 * std::pow(amax, k))) return std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d gamma = a.inverse() * b;
+  out = trial;
+  double violation = -std::numeric_limits<double>::infinity();
+  for (int l = 0; l < k; ++l) {
+    out -= gamma[l] * p.dn[ids[l]];
+    violation = std::max(violation, -gamma[l] * gamma_scale);
+  }
+  violation = std::max(violation, out[1] - out[0]);
+  violation = std::max(violation, out[2] - out[1]);
+  for (int j = 0; j < 6; ++j) {
+    if (j >= kT1 && !p.tension) break;
+    if (std::find(ids, ids + k, j) != ids + k) continue;
+    violation = std::max(violation, p.m[j].dot(out) - p.r[j]);
+  }
+  return violation - tol;
+}
+
+/// The return in sorted principal space. `scale`: a stress magnitude for the tolerances.
+PrincipalResult principal_return(const Planes& p, const Eigen::Vector3d& trial, double shear_modulus) {
+  const double scale = std::max({std::abs(trial[0]), std::abs(trial[2]), std::abs(p.r[kMain]),
+                                 p.tension ? std::abs(p.r[kT1]) : 0.0});
+  PrincipalResult res{trial, ReturnRegion::Elastic, {0, 0, 0}, 0};
+  const double f_main = p.m[kMain].dot(trial) - p.r[kMain];
+  const double f_tension = p.tension ? trial[0] - p.r[kT1] : -1.0;
+  const double tol_elastic = 1e-12 * scale;
+  if (f_main <= tol_elastic && f_tension <= tol_elastic) return res;
+
+  struct Candidate {
+    std::array<int, 3> ids;
+    int k;
+    ReturnRegion region;
+  };
+  // Ordered from the most frequent; the first admissible one is the return ([SPO] Box 8.5 tries the face,
+  // then the edge on the trial's side, then the apex; the Rankine sets follow [CDA] sec. 5).
+  static constexpr std::array<Candidate, 12> kCandidates{{
+      {{kMain, 0, 0}, 1, ReturnRegion::Face},
+      {{kMain, kTC, 0}, 2, ReturnRegion::EdgeTriaxialCompression},
+      {{kMain, kTE, 0}, 2, ReturnRegion::EdgeTriaxialExtension},
+      {{kT1, 0, 0}, 1, ReturnRegion::TensionCutoff},
+      {{kT1, kMain, 0}, 2, ReturnRegion::TensionShearEdge},
+      {{kT1, kT2, 0}, 2, ReturnRegion::TensionCutoffEdge},
+      {{kT1, kMain, kTE}, 3, ReturnRegion::TensionCorner},
+      {{kT1, kT2, kMain}, 3, ReturnRegion::TensionCorner},
+      {{kT1, kT2, kTC}, 3, ReturnRegion::TensionCorner},
+      {{kT1, kMain, kTC}, 3, ReturnRegion::TensionCorner},
+      {{kT2, kMain, kTC}, 3, ReturnRegion::TensionCorner},
+      {{kT1, kT2, kT3}, 3, ReturnRegion::TensionCorner},
+  }};
+  const double tol = 1e-9 * scale;
+  const double gamma_scale = 2.0 * shear_modulus;
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d out = trial;
+  for (const Candidate& c : kCandidates) {
+    if (!p.tension && c.ids[0] >= kT1) break;  // the Rankine sets come last
+    const double v = try_active_set(p, trial, c.ids.data(), c.k, tol, gamma_scale, out);
+    if (v < best) {
+      best = v;
+      res.stress = out;
+      res.region = c.region;
+      res.active = c.ids;
+      res.count = c.k;
+    }
+    if (v <= 0.0) return res;
+    // No tension: after face and both edges only the apex is left ([SPO] Box 8.5, step (iv)).
+    if (!p.tension && c.region == ReturnRegion::EdgeTriaxialExtension && p.apex) {
+      res.stress = Eigen::Vector3d::Constant(p.apex_stress);
+      res.region = ReturnRegion::Apex;
+      res.count = -1;
+      return res;
+    }
+  }
+  return res;  // nothing admissible within the tolerance (round-off at a corner): the least violating set
+}
+
+}  // namespace
+
+const char* to_string(ReturnRegion region) {
+  switch (region) {
+    case ReturnRegion::Elastic: return "elastic";
+    case ReturnRegion::Face: return "face";
+    case ReturnRegion::EdgeTriaxialCompression: return "edge (triaxial compression)";
+    case ReturnRegion::EdgeTriaxialExtension: return "edge (triaxial extension)";
+    case ReturnRegion::Apex: return "apex";
+    case ReturnRegion::TensionCutoff: return "tension cutoff";
+    case ReturnRegion::TensionShearEdge: return "tension cutoff + shear edge";
+    case ReturnRegion::TensionCutoffEdge: return "tension cutoff edge";
+    case ReturnRegion::TensionCorner: return "tension corner";
+  }
+  return "unknown";
+}
+
+PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                const IsotropicElasticity& el) {
+  const double g = el.shear_modulus;
+  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
+  const double dvol = dstrain[0] + dstrain[1];
+  return {stress[0] + lambda * dvol + 2.0 * g * dstrain[0], stress[1] + lambda * dvol + 2.0 * g * dstrain[1],
+          stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
+}
+
+MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const IsotropicElasticity& el,
+                                      const MohrCoulombStrength& st) {
+  const Planes planes = make_planes(el, st);
+  const Spectral sp = decompose(trial);
+  const PrincipalResult pr = principal_return(planes, sp.sorted, el.shear_modulus);
+  if (pr.region == ReturnRegion::Elastic) return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
+  MohrCoulombUpdate up;
+  up.stress = recompose(sp, pr.stress);
+  up.region = pr.region;
+  // Plastic strain increment = C (s_trial - s) (the total strain is fixed; [SPO] eq. (8.46)).
+  const Eigen::Vector4d ds = trial - up.stress;
+  const double p = (ds[0] + ds[1] + ds[2]) / 3.0;
+  const double g2 = 2.0 * el.shear_modulus, k3 = 3.0 * el.bulk_modulus;
+  up.plastic_strain_increment = {(ds[0] - p) / g2 + p / k3, (ds[1] - p) / g2 + p / k3, (ds[2] - p) / g2 + p / k3,
+                                 ds[3] / el.shear_modulus};
+  return up;
+}
+
+MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                      const IsotropicElasticity& el, const MohrCoulombStrength& st) {
+  return mohr_coulomb_return(elastic_trial(stress, dstrain, el), el, st);
+}
+
+Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& trial, const IsotropicElasticity& el,
+                                                     const MohrCoulombStrength& st) {
+  const double g = el.shear_modulus;
+  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
+  Eigen::Matrix<double, 4, 3> d;  // d(sxx, syy, szz, sxy) / d(exx, eyy, gxy), plane strain
+  d << lambda + 2.0 * g, lambda, 0.0,  //
+      lambda, lambda + 2.0 * g, 0.0,   //
+      lambda, lambda, 0.0,             //
+      0.0, 0.0, g;
+  const Planes planes = make_planes(el, st);
+  const Spectral sp = decompose(trial);
+  const PrincipalResult pr = principal_return(planes, sp.sorted, g);
+  if (pr.region == ReturnRegion::Elastic) return d;
+
+  // Principal algorithmic tangent ds/ds_trial = I - D N A^-1 M^T over the active planes ([SPO] eq. (8.51));
+  // zero at a vertex (the stress is a fixed point).
+  Eigen::Matrix3d jp = Eigen::Matrix3d::Zero();
+  if (pr.count > 0 && pr.count < 3) {
+    const int k = pr.count;
+    Eigen::Matrix3d a = Eigen::Matrix3d::Identity();
+    for (int j = 0; j < k; ++j)
+      for (int l = 0; l < k; ++l) a(j, l) = planes.m[pr.active[j]].dot(planes.dn[pr.active[l]]);
+    const Eigen::Matrix3d ainv = a.inverse();
+    jp = Eigen::Matrix3d::Identity();
+    for (int j = 0; j < k; ++j)
+      for (int l = 0; l < k; ++l) jp -= ainv(l, j) * planes.dn[pr.active[l]] * planes.m[pr.active[j]].transpose();
+  }
+  // In (a, b, z) coordinates: a, b the in-plane principal values, z = szz.
+  Eigen::Matrix3d jabz;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) jabz(sp.slot[i], sp.slot[j]) = jp(i, j);
+  // d(a, b, z) / d(sxx, syy, szz, sxy) of the trial.
+  const double c2 = sp.cos2, s2 = sp.sin2;
+  Eigen::Matrix<double, 3, 4> l;
+  l << 0.5 * (1.0 + c2), 0.5 * (1.0 - c2), 0.0, s2,  //
+      0.5 * (1.0 - c2), 0.5 * (1.0 + c2), 0.0, -s2,  //
+      0.0, 0.0, 1.0, 0.0;
+  const Eigen::Matrix<double, 3, 4> dabz = jabz * l;
+  const Eigen::Matrix<double, 1, 4> dcenter = 0.5 * (dabz.row(0) + dabz.row(1));
+  const Eigen::Matrix<double, 1, 4> dradius = 0.5 * (dabz.row(0) - dabz.row(1));
+  // Spin term ([SPO] eq. (A.46)): q = r'/R, the returned over the trial circle radius; its limit
+  // dr'/dR when the in-plane principal values of the trial coincide.
+  double q;
+  Eigen::Vector3d abz_new;
+  for (int i = 0; i < 3; ++i) abz_new[sp.slot[i]] = pr.stress[i];
+  const double r_new = 0.5 * (abz_new[0] - abz_new[1]);
+  const double scale = std::max({std::abs(trial[0]), std::abs(trial[1]), std::abs(trial[2]), std::abs(trial[3])});
+  if (sp.radius > 1e-10 * scale && sp.radius > 0.0)
+    q = r_new / sp.radius;
+  else
+    q = 0.5 * (jabz(0, 0) - jabz(0, 1) - jabz(1, 0) + jabz(1, 1));
+  Eigen::Matrix<double, 1, 4> w;  // sin2 dh - cos2 dsxy, h = (sxx - syy) / 2
+  w << 0.5 * s2, -0.5 * s2, 0.0, -c2;
+  Eigen::Matrix4d t;  // d(sxx, syy, szz, sxy) / d(trial)
+  t.row(0) = dcenter + c2 * dradius + q * s2 * w;
+  t.row(1) = dcenter - c2 * dradius - q * s2 * w;
+  t.row(2) = dabz.row(2);
+  t.row(3) = s2 * dradius - q * c2 * w;
+  return t * d;
+}
+
+Eigen::Matrix3d mohr_coulomb_tangent(const PlaneStrainStress& trial, const IsotropicElasticity& el,
+                                     const MohrCoulombStrength& st) {
+  const Eigen::Matrix<double, 4, 3> t = mohr_coulomb_tangent_4x3(trial, el, st);
+  Eigen::Matrix3d out;
+  out.row(0) = t.row(0);
+  out.row(1) = t.row(1);
+  out.row(2) = t.row(3);
+  return out;
+}
+
+double mohr_coulomb_yield(const PlaneStrainStress& stress, const MohrCoulombStrength& st) {
+  const Spectral sp = decompose(stress);
+  const double sf = std::sin(st.friction);
+  return (sp.sorted[0] - sp.sorted[2]) + (sp.sorted[0] + sp.sorted[2]) * sf - 2.0 * st.cohesion * std::cos(st.friction);
+}
+
+}  // namespace constitutive

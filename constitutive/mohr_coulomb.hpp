@@ -1,0 +1,97 @@
+#pragma once
+// Mohr-Coulomb perfect plasticity in plane strain: elastic predictor + exact return mapping in principal
+// stresses onto the face, both edges and the apex of the Mohr-Coulomb pyramid, with an optional Rankine
+// tension cutoff (its plane, its edges and its corners with the pyramid), and the consistent tangent.
+//
+// References
+//   [SPO]  de Souza Neto, Peric & Owen (2008), Computational Methods for Plasticity, Wiley:
+//          sec. 8.2.2 (Mohr-Coulomb return in principal stresses), Boxes 8.4-8.6, eqs. (8.40)-(8.52);
+//          Appendix A.5, eq. (A.46) (derivative of an isotropic tensor function in 2D: the "spin" term).
+//   [CDA]  Clausen, Damkilde & Andersen (2006), Efficient return algorithms for associated plasticity with
+//          multiple yield planes, IJNME 66:1036-1059 (return to planes / lines / points in principal space,
+//          the multi-plane linear systems eq. (18)-(27), the Rankine cutoff corners).
+//
+// Conventions: Pa, tension positive; principal stresses sorted s1 >= s2 >= s3 (s3 the most compressive).
+//   Yield (main plane), [SPO] eq. (8.40):  f = (s1 - s3) + (s1 + s3) sin(phi) - 2 c cos(phi) <= 0
+//   Flow potential:                        g = (s1 - s3) + (s1 + s3) sin(psi)
+//   Tension cutoff (Rankine, associated):  s_i - T <= 0 with T = min(tension_cutoff, c cot(phi)).
+// Plane strain: the total out-of-plane strain increment is zero; szz is tracked through the elastic law.
+//
+// Hot path: no allocation, no virtual call, no exception. The elastic test is a few flops; plastic states
+// solve at most a 3x3 linear system per active-set candidate.
+#include <Eigen/Core>
+#include <cstdint>
+
+namespace constitutive {
+
+/// Plane-strain stress (sxx, syy, szz, sxy), Pa, tension positive.
+using PlaneStrainStress = Eigen::Vector4d;
+/// Plane-strain strain (increment) (exx, eyy, gxy), engineering shear gxy = 2 exy; ezz = 0.
+using PlaneStrainStrain = Eigen::Vector3d;
+
+struct IsotropicElasticity {
+  double bulk_modulus;   ///< K, Pa
+  double shear_modulus;  ///< G, Pa
+  /// From Young's modulus E (Pa) and Poisson's ratio nu: K = E / (3 (1 - 2 nu)), G = E / (2 (1 + nu)).
+  static IsotropicElasticity from_young_poisson(double young, double poisson) {
+    return {young / (3.0 * (1.0 - 2.0 * poisson)), young / (2.0 * (1.0 + poisson))};
+  }
+};
+
+struct MohrCoulombStrength {
+  double friction;        ///< phi, rad, 0 <= phi < pi/2 (phi = 0 is Tresca: no apex)
+  double dilation;        ///< psi, rad, 0 <= psi <= phi (non-associated flow when psi != phi)
+  double cohesion;        ///< c >= 0, Pa (zero works: no division by zero, no NaN)
+  double tension_cutoff;  ///< max principal stress allowed (Rankine cutoff), Pa; +infinity = none.
+                          ///< Values at or above the apex c cot(phi) are clamped there (= no cutoff).
+};
+
+/// Where the return mapping ended (the active yield planes).
+enum class ReturnRegion : std::uint8_t {
+  Elastic,                  ///< trial state admissible: returned bit for bit
+  Face,                     ///< main plane only
+  EdgeTriaxialCompression,  ///< s1 = s2 > s3 (main plane + the plane with s2 in place of s1)
+  EdgeTriaxialExtension,    ///< s1 > s2 = s3 (main plane + the plane with s2 in place of s3)
+  Apex,                     ///< s1 = s2 = s3 = c cot(phi)
+  TensionCutoff,            ///< s1 = T only
+  TensionShearEdge,         ///< s1 = T on the main plane
+  TensionCutoffEdge,        ///< s1 = s2 = T (two tension planes)
+  TensionCorner,            ///< a point where tension planes meet the pyramid or each other (incl. s1 = s2 = s3 = T)
+};
+
+const char* to_string(ReturnRegion region);
+
+struct MohrCoulombUpdate {
+  PlaneStrainStress stress;                  ///< updated stress (sxx, syy, szz, sxy)
+  Eigen::Vector4d plastic_strain_increment;  ///< (dexx, deyy, dezz, dgxy) plastic, engineering shear
+  ReturnRegion region;
+};
+
+/// Elastic trial stress: stress + D dstrain with dezz = 0, so dszz = (K - 2G/3)(dexx + deyy).
+PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                const IsotropicElasticity& elasticity);
+
+/// Elastic predictor + closest-point return in principal stress space ([SPO] Boxes 8.4-8.6; [CDA])
+/// onto face / edges / apex (+ tension cutoff). A trial state inside the surface (f <= tol) is returned
+/// unchanged, bit for bit, with region Elastic and a zero plastic strain increment.
+MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                      const IsotropicElasticity& elasticity, const MohrCoulombStrength& strength);
+
+/// The same return, starting from an elastic trial stress (for callers that build the trial themselves).
+MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, const IsotropicElasticity& elasticity,
+                                      const MohrCoulombStrength& strength);
+
+/// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress
+/// ([SPO] eq. (8.51)-(8.52) in principal space, mapped back with the spin term of eq. (A.46)).
+Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& trial_stress,
+                                                     const IsotropicElasticity& elasticity,
+                                                     const MohrCoulombStrength& strength);
+
+/// Consistent tangent d(sxx, syy, sxy) / d(exx, eyy, gxy) (the rows of the 4x3 without szz).
+Eigen::Matrix3d mohr_coulomb_tangent(const PlaneStrainStress& trial_stress, const IsotropicElasticity& elasticity,
+                                     const MohrCoulombStrength& strength);
+
+/// Yield function value of the main plane (Pa; > 0 outside), for tests and diagnostics.
+double mohr_coulomb_yield(const PlaneStrainStress& stress, const MohrCoulombStrength& strength);
+
+}  // namespace constitutive
