@@ -90,6 +90,11 @@ class QuietHdf5 {
 }  // namespace
 
 void write_particle_table(const std::filesystem::path& file, std::span<const ParticleRecord> records) {
+  write_particle_table(file, records, nullptr);
+}
+
+void write_particle_table(const std::filesystem::path& file, std::span<const ParticleRecord> records,
+                          const std::function<void(std::int64_t file_id)>& add_datasets) {
   QuietHdf5 quiet;
   const auto members = schema();
   std::vector<const char*> names;
@@ -111,6 +116,14 @@ void write_particle_table(const std::filesystem::path& file, std::span<const Par
     if (status < 0) {
       std::filesystem::remove(temporary);
       throw std::runtime_error(file.string() + ": writing the particle table failed");
+    }
+    if (add_datasets) {
+      try {
+        add_datasets(static_cast<std::int64_t>(h5.get()));
+      } catch (...) {
+        std::filesystem::remove(temporary);
+        throw;
+      }
     }
   }
   common::commit_file(temporary, file);

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,6 +43,12 @@ inline constexpr std::size_t kParticleTableMembers = 53;
 /// The file is written to a temporary name and renamed, so a failed write leaves no file.
 /// Throws std::runtime_error naming the file on failure.
 void write_particle_table(const std::filesystem::path& file, std::span<const ParticleRecord> records);
+
+/// As above; `add_datasets(file_id)` receives the open HDF5 file (an hid_t) after "/table" is written
+/// and before the rename, to add datasets of its own (CB-Geo's reader opens "/table" only, so extra
+/// datasets keep the file resumable by CB-Geo). It reports failure by throwing.
+void write_particle_table(const std::filesystem::path& file, std::span<const ParticleRecord> records,
+                          const std::function<void(std::int64_t file_id)>& add_datasets);
 
 /// Reads a particle table written by CB-Geo, by this project, or by h5py with the same member
 /// names (members are matched by name, so member order in the file does not matter).

@@ -1,0 +1,174 @@
+#include "mpm/io/ascii_files.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "common/input_error.hpp"
+
+namespace mpm::io {
+namespace {
+
+std::string at_line(const std::string& shown, int line) { return shown + ":" + std::to_string(line); }
+
+/// The header count of a counted file ("n" or "nnodes ncells").
+long long header_count(const std::string& shown, const TextLine& line, std::size_t word, const char* what) {
+  const long long n = parse_integer(shown, line, word);
+  if (n < 0) throw common::InputError(at_line(shown, line.number), std::string(what) + " must be >= 0, got " + std::to_string(n));
+  return n;
+}
+
+}  // namespace
+
+std::vector<TextLine> read_data_lines(const std::filesystem::path& file, const std::string& shown) {
+  std::ifstream in(file);
+  if (!in) throw common::InputError(shown, "file not found or not readable (looked for " + file.string() + ")");
+  std::vector<TextLine> lines;
+  std::string text;
+  int number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    if (text.find('#') != std::string::npos || text.find('!') != std::string::npos) continue;
+    std::istringstream words(text);
+    TextLine line{number, {}};
+    for (std::string w; words >> w;) line.words.push_back(w);
+    if (!line.words.empty()) lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+double parse_double(const std::string& shown, const TextLine& line, std::size_t word) {
+  if (word >= line.words.size())
+    throw common::InputError(at_line(shown, line.number), "expected at least " + std::to_string(word + 1) +
+                                                             " numbers, got " + std::to_string(line.words.size()));
+  const std::string& w = line.words[word];
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(w.c_str(), &end);
+  if (end == w.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    throw common::InputError(at_line(shown, line.number), "\"" + w + "\" is not a finite number");
+  return v;
+}
+
+long long parse_integer(const std::string& shown, const TextLine& line, std::size_t word) {
+  if (word >= line.words.size())
+    throw common::InputError(at_line(shown, line.number), "expected at least " + std::to_string(word + 1) +
+                                                             " numbers, got " + std::to_string(line.words.size()));
+  const std::string& w = line.words[word];
+  errno = 0;
+  char* end = nullptr;
+  const long long v = std::strtoll(w.c_str(), &end, 10);
+  if (end == w.c_str() || *end != '\0' || errno == ERANGE)
+    throw common::InputError(at_line(shown, line.number), "\"" + w + "\" is not an integer");
+  return v;
+}
+
+MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& shown, int nodes_per_cell) {
+  const auto lines = read_data_lines(file, shown);
+  if (lines.empty()) throw common::InputError(shown, "empty file (expected \"nnodes ncells\" on the first line)");
+  const TextLine& head = lines.front();
+  if (head.words.size() != 2)
+    throw common::InputError(at_line(shown, head.number), "expected \"nnodes ncells\" (2 integers)");
+  const long long nnodes = header_count(shown, head, 0, "nnodes");
+  const long long ncells = header_count(shown, head, 1, "ncells");
+  if (nnodes == 0 || ncells == 0) throw common::InputError(at_line(shown, head.number), "nnodes and ncells must be > 0");
+  const long long found = static_cast<long long>(lines.size()) - 1;
+  if (found != nnodes + ncells)
+    throw common::InputError(shown, "header says " + std::to_string(nnodes) + " nodes + " + std::to_string(ncells) +
+                                        " cells = " + std::to_string(nnodes + ncells) + " data lines, found " +
+                                        std::to_string(found) + (found < nnodes + ncells ? " (truncated file?)" : ""));
+  MeshFile mesh;
+  mesh.nodes.reserve(nnodes);
+  for (long long k = 1; k <= nnodes; ++k) {
+    const TextLine& l = lines[k];
+    if (l.words.size() != 2 && l.words.size() != 3)
+      throw common::InputError(at_line(shown, l.number), "node " + std::to_string(k - 1) + ": expected \"x y\", got " +
+                                                            std::to_string(l.words.size()) + " values");
+    if (l.words.size() == 3 && parse_double(shown, l, 2) != 0.0)
+      throw common::InputError(at_line(shown, l.number), "node " + std::to_string(k - 1) + ": a 2D mesh needs z = 0");
+    mesh.nodes.emplace_back(parse_double(shown, l, 0), parse_double(shown, l, 1));
+  }
+  mesh.cells.reserve(ncells);
+  for (long long k = nnodes + 1; k < static_cast<long long>(lines.size()); ++k) {
+    const TextLine& l = lines[k];
+    const long long cell = k - nnodes - 1;
+    if (static_cast<int>(l.words.size()) != nodes_per_cell)
+      throw common::InputError(at_line(shown, l.number), "cell " + std::to_string(cell) + ": expected " +
+                                                            std::to_string(nodes_per_cell) + " node ids for this cell_type, got " +
+                                                            std::to_string(l.words.size()));
+    std::vector<long long> ids;
+    for (int w = 0; w < nodes_per_cell; ++w) {
+      const long long id = parse_integer(shown, l, w);
+      if (id < 0 || id >= nnodes)
+        throw common::InputError(at_line(shown, l.number), "cell " + std::to_string(cell) + ": node id " +
+                                                              std::to_string(id) + " is not in 0.." + std::to_string(nnodes - 1));
+      ids.push_back(id);
+    }
+    mesh.cells.push_back(std::move(ids));
+  }
+  return mesh;
+}
+
+std::vector<Eigen::Vector2d> read_particle_coordinates(const std::filesystem::path& file, const std::string& shown) {
+  const auto lines = read_data_lines(file, shown);
+  if (lines.empty()) throw common::InputError(shown, "empty file (expected the particle count on the first line)");
+  if (lines.front().words.size() != 1)
+    throw common::InputError(at_line(shown, lines.front().number), "expected the particle count (1 integer)");
+  const long long n = header_count(shown, lines.front(), 0, "particle count");
+  if (static_cast<long long>(lines.size()) - 1 != n)
+    throw common::InputError(shown, "header says " + std::to_string(n) + " particles, found " +
+                                        std::to_string(lines.size() - 1) + " coordinate lines");
+  std::vector<Eigen::Vector2d> xs;
+  xs.reserve(n);
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const TextLine& l = lines[k];
+    if (l.words.size() != 2 && l.words.size() != 3)
+      throw common::InputError(at_line(shown, l.number), "particle " + std::to_string(k - 1) + ": expected \"x y\", got " +
+                                                            std::to_string(l.words.size()) + " values");
+    if (l.words.size() == 3 && parse_double(shown, l, 2) != 0.0)
+      throw common::InputError(at_line(shown, l.number), "particle " + std::to_string(k - 1) + ": a 2D deck needs z = 0");
+    xs.emplace_back(parse_double(shown, l, 0), parse_double(shown, l, 1));
+  }
+  return xs;
+}
+
+std::vector<std::array<double, 6>> read_particle_stresses(const std::filesystem::path& file, const std::string& shown) {
+  const auto lines = read_data_lines(file, shown);
+  if (lines.empty()) throw common::InputError(shown, "empty file (expected the particle count on the first line)");
+  if (lines.front().words.size() != 1)
+    throw common::InputError(at_line(shown, lines.front().number), "expected the particle count (1 integer)");
+  const long long n = header_count(shown, lines.front(), 0, "particle count");
+  if (static_cast<long long>(lines.size()) - 1 != n)
+    throw common::InputError(shown, "header says " + std::to_string(n) + " stress lines, found " +
+                                        std::to_string(lines.size() - 1));
+  std::vector<std::array<double, 6>> out;
+  out.reserve(n);
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    const TextLine& l = lines[k];
+    if (l.words.size() != 6)
+      throw common::InputError(at_line(shown, l.number), "expected 6 stresses \"sxx syy szz sxy syz sxz\", got " +
+                                                            std::to_string(l.words.size()) + " values");
+    std::array<double, 6> s{};
+    for (int c = 0; c < 6; ++c) s[c] = parse_double(shown, l, c);
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<std::vector<double>> read_columns(const std::filesystem::path& file, const std::string& shown,
+                                              std::size_t columns) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& l : read_data_lines(file, shown)) {
+    if (l.words.size() != columns)
+      throw common::InputError(at_line(shown, l.number), "expected " + std::to_string(columns) + " values, got " +
+                                                            std::to_string(l.words.size()));
+    std::vector<double> row(columns);
+    for (std::size_t c = 0; c < columns; ++c) row[c] = parse_double(shown, l, c);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace mpm::io

@@ -1,0 +1,635 @@
+#include "mpm/io/deck_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "common/input_error.hpp"
+#include "mpm/io/ascii_files.hpp"
+#include "mpm/io/json_keys.hpp"
+#include "mpm/io/lattice.hpp"
+
+namespace mpm::io {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const std::vector<std::string>& stress_smoothing_methods() {
+  static const std::vector<std::string> methods = {"none", "cell_volumetric", "nodal"};
+  return methods;
+}
+
+namespace {
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+
+json parse_json_file(const fs::path& file, const std::string& shown) {
+  std::ifstream in(file);
+  if (!in) throw common::InputError(shown, "input file not found or not readable (looked for " + file.string() + ")");
+  try {
+    return json::parse(in, nullptr, true, /*ignore_comments=*/false);
+  } catch (const json::parse_error& e) {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> keep the part after the tag.
+    std::string what = e.what();
+    const auto tag = what.find("] ");
+    if (tag != std::string::npos) what = what.substr(tag + 2);
+    throw common::InputError(shown, "invalid JSON (truncated file?): " + what);
+  }
+}
+
+/// Entity sets file: {"node_sets": [{"id", "set"}], "particle_sets": [...], "cell_sets": [...]}.
+struct EntitySets {
+  std::map<long long, std::vector<long long>> nodes, particles, cells;
+};
+
+std::map<long long, std::vector<long long>> read_set_list(StrictObject& root, const std::string& key, long long limit,
+                                                          const char* entity) {
+  std::map<long long, std::vector<long long>> out;
+  const json* list = root.optional(key);
+  if (!list) return out;
+  if (!list->is_array()) root.fail(key, "expected an array of {\"id\", \"set\"} objects, got " + json_kind(*list));
+  for (std::size_t k = 0; k < list->size(); ++k) {
+    StrictObject s((*list)[k], root.file(), key + "[" + std::to_string(k) + "]");
+    const long long id = s.integer("id");
+    const json& ids = s.required("set");
+    if (!ids.is_array()) s.fail("set", "expected an array of " + std::string(entity) + " ids");
+    std::vector<long long> members;
+    for (const auto& v : ids) {
+      if (!v.is_number_integer()) s.fail("set", "expected integer " + std::string(entity) + " ids, got " + json_kind(v));
+      const long long m = v.get<long long>();
+      if (m < 0 || (limit >= 0 && m >= limit))
+        s.fail("set", std::string(entity) + " id " + std::to_string(m) + " is not in 0.." + std::to_string(limit - 1));
+      members.push_back(m);
+    }
+    s.finish();
+    if (!out.emplace(id, std::move(members)).second) s.fail("id", "duplicate set id " + std::to_string(id));
+  }
+  return out;
+}
+
+EntitySets read_entity_sets(const fs::path& file, const std::string& shown, long long nnodes, long long ncells) {
+  const json j = parse_json_file(file, shown);
+  StrictObject root(j, shown, "");
+  EntitySets sets;
+  sets.nodes = read_set_list(root, "node_sets", nnodes, "node");
+  sets.particles = read_set_list(root, "particle_sets", -1, "particle");
+  sets.cells = read_set_list(root, "cell_sets", ncells, "cell");
+  root.finish();
+  return sets;
+}
+
+/// Resolved material table.
+MaterialSpec read_material(StrictObject& m) {
+  MaterialSpec spec;
+  const long long id = m.integer("id");
+  if (id < 0) m.fail("id", "expected an integer >= 0, got " + std::to_string(id));
+  spec.id = static_cast<unsigned>(id);
+  const std::string type = m.string("type");
+  if (type == "LinearElastic2D") spec.type = MaterialType::LinearElastic2D;
+  else if (type == "MohrCoulomb2D") spec.type = MaterialType::MohrCoulomb2D;
+  else m.fail("type", "unsupported material \"" + type + "\" (expected LinearElastic2D or MohrCoulomb2D)");
+  auto positive = [&](const char* key) {
+    const double v = m.number(key);
+    if (!(v > 0)) m.fail(key, "expected a number > 0, got " + num(v));
+    return v;
+  };
+  auto non_negative = [&](const char* key) {
+    const double v = m.number(key);
+    if (!(v >= 0)) m.fail(key, "expected a number >= 0, got " + num(v));
+    return v;
+  };
+  spec.density = positive("density");
+  spec.youngs_modulus = positive("youngs_modulus");
+  spec.poisson_ratio = m.number("poisson_ratio");
+  if (!(spec.poisson_ratio > -1 && spec.poisson_ratio < 0.5))
+    m.fail("poisson_ratio", "expected a number in (-1, 0.5), got " + num(spec.poisson_ratio));
+  if (spec.type == MaterialType::MohrCoulomb2D) {
+    const double deg = std::numbers::pi / 180.0;
+    auto angle = [&](const char* key) {
+      const double v = m.number(key);
+      if (!(v >= 0 && v < 90)) m.fail(key, "expected an angle in degrees in [0, 90), got " + num(v));
+      return v * deg;
+    };
+    spec.friction = angle("friction");
+    spec.dilation = angle("dilation");
+    spec.cohesion = non_negative("cohesion");
+    spec.residual_friction = angle("residual_friction");
+    spec.residual_dilation = angle("residual_dilation");
+    spec.residual_cohesion = non_negative("residual_cohesion");
+    spec.peak_pdstrain = non_negative("peak_pdstrain");
+    spec.residual_pdstrain = non_negative("residual_pdstrain");
+    spec.tension_cutoff = non_negative("tension_cutoff");
+    spec.softening = m.boolean("softening");
+    if (spec.dilation > spec.friction) m.fail("dilation", "must not exceed friction");
+    if (spec.softening && !(spec.residual_pdstrain > spec.peak_pdstrain))
+      m.fail("residual_pdstrain", "must be > peak_pdstrain when softening is true");
+    if (spec.friction == 0 && spec.cohesion == 0) m.fail("cohesion", "friction 0 and cohesion 0 give no strength");
+  }
+  m.finish();
+  return spec;
+}
+
+std::vector<MaterialSpec> read_materials(StrictObject& root) {
+  const json& list = root.required("materials");
+  if (!list.is_array() || list.empty()) root.fail("materials", "expected a non-empty array of materials");
+  std::vector<MaterialSpec> out;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    StrictObject m(list[k], root.file(), "materials[" + std::to_string(k) + "]");
+    MaterialSpec spec = read_material(m);
+    for (const auto& other : out)
+      if (other.id == spec.id) m.fail("id", "duplicate material id " + std::to_string(spec.id));
+    out.push_back(spec);
+  }
+  return out;
+}
+
+const MaterialSpec* find_material(const std::vector<MaterialSpec>& ms, long long id) {
+  for (const auto& m : ms)
+    if (static_cast<long long>(m.id) == id) return &m;
+  return nullptr;
+}
+
+struct ResumeSpec {
+  bool resume = false;
+  std::string uuid;
+  long long step = 0;
+};
+
+void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string& uuid) {
+  const std::string type = a.string("type");
+  if (type != "MPMExplicit2D") a.fail("type", "unsupported analysis \"" + type + "\" (expected MPMExplicit2D)");
+  Analysis& an = deck.analysis;
+  // CB-Geo's current key is mpm_scheme; older decks call it stress_update. Never a silent default.
+  std::string scheme_key = a.has("mpm_scheme") ? "mpm_scheme" : "stress_update";
+  if (a.has("mpm_scheme") && a.has("stress_update")) a.fail("stress_update", "give mpm_scheme or stress_update, not both");
+  const std::string scheme = a.string(scheme_key);
+  if (scheme == "usf") an.scheme = Scheme::USF;
+  else if (scheme == "usl") an.scheme = Scheme::USL;
+  else if (scheme == "musl") an.scheme = Scheme::MUSL;
+  else a.fail(scheme_key, "unknown scheme \"" + scheme + "\" (expected usf, usl or musl)");
+  an.velocity_update = a.boolean_or("velocity_update", false);
+  an.locate_particles = a.boolean_or("locate_particles", true);
+  an.dt = a.number("dt");
+  if (!(an.dt > 0)) a.fail("dt", "expected a number > 0, got " + num(an.dt));
+  an.nsteps = a.integer("nsteps");
+  if (an.nsteps <= 0) a.fail("nsteps", "expected an integer > 0, got " + std::to_string(an.nsteps));
+  uuid = a.string_or("uuid", "");
+  if (const json* d = a.optional("damping")) {
+    StrictObject damping(*d, a.file(), a.path_of("damping"));
+    const std::string dtype = damping.string("type");
+    if (dtype != "Cundall") damping.fail("type", "unsupported damping \"" + dtype + "\" (expected Cundall)");
+    an.cundall_damping = damping.number("damping_factor");
+    if (!(an.cundall_damping >= 0 && an.cundall_damping < 1))
+      damping.fail("damping_factor", "expected a number in [0, 1), got " + num(an.cundall_damping));
+    damping.finish();
+  }
+  if (const json* r = a.optional("resume")) {
+    StrictObject rs(*r, a.file(), a.path_of("resume"));
+    resume.resume = rs.boolean("resume");
+    resume.uuid = rs.string_or("uuid", "");
+    resume.step = rs.integer_or("step", 0);
+    if (resume.resume) {
+      if (resume.uuid.empty()) rs.fail("uuid", "missing (required when resume is true)");
+      if (resume.step < 0 || resume.step >= an.nsteps)
+        rs.fail("step", "expected an integer in 0.." + std::to_string(an.nsteps - 1) + " (analysis.nsteps - 1), got " +
+                            std::to_string(resume.step));
+    }
+    rs.finish();
+  }
+  // Keys of CB-Geo that change nothing here, accepted only with the value this program honours.
+  a.accept_only("pressure_smoothing", {false}, "pressure smoothing is not implemented; see analysis.stress_smoothing");
+  a.accept_only("interface", {false}, "multi-material contact is not implemented");
+  if (const json* nlb = a.optional("nload_balance_steps"))
+    if (!nlb->is_number_integer() || nlb->get<long long>() <= 0)
+      a.fail("nload_balance_steps", "expected an integer > 0 (MPI load balancing; no effect here)");
+  // Extensions (mpm/README.md).
+  an.cfl = a.number_or("cfl", 0.0);
+  if (!(an.cfl >= 0 && an.cfl <= 1)) a.fail("cfl", "expected a number in (0, 1] (0 or absent: fixed dt), got " + num(an.cfl));
+  an.pic_blend = a.number_or("pic_blend", an.velocity_update ? 1.0 : 0.0);
+  if (!(an.pic_blend >= 0 && an.pic_blend <= 1)) a.fail("pic_blend", "expected a number in [0, 1], got " + num(an.pic_blend));
+  if (an.velocity_update && an.pic_blend != 1.0)
+    a.fail("pic_blend", "velocity_update true means pure PIC; give pic_blend only with velocity_update false");
+  an.stress_smoothing = a.string_or("stress_smoothing", "none");
+  const auto& methods = stress_smoothing_methods();
+  if (std::find(methods.begin(), methods.end(), an.stress_smoothing) == methods.end()) {
+    std::string list;
+    for (const auto& m : methods) list += (list.empty() ? "" : ", ") + m;
+    a.fail("stress_smoothing", "unknown method \"" + an.stress_smoothing + "\" (expected one of " + list + ")");
+  }
+  a.finish();
+}
+
+/// Constraint lists of mesh.boundary_conditions.
+void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const EntitySets& sets, Deck& deck,
+                              const fs::path& dir) {
+  auto node_set = [&](StrictObject& c) {
+    const long long nset = c.integer("nset_id");
+    std::vector<int> nodes;
+    if (nset == -1) {  // CB-Geo: set -1 is every node
+      for (int k = 0; k < deck.grid.nodes_x * deck.grid.nodes_y; ++k) nodes.push_back(k);
+      return nodes;
+    }
+    const auto it = sets.nodes.find(nset);
+    if (it == sets.nodes.end()) c.fail("nset_id", "node set " + std::to_string(nset) + " is not defined in the entity sets");
+    for (long long id : it->second) nodes.push_back(lattice.node_index[id]);
+    return nodes;
+  };
+  auto direction = [](StrictObject& c) {
+    const long long dir = c.integer("dir");
+    if (dir != 0 && dir != 1) c.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
+    return static_cast<int>(dir);
+  };
+  auto file_node = [&](const std::string& shown, double value, int line) {
+    const double r = std::round(value);
+    if (r != value || r < 0 || r >= static_cast<double>(lattice.node_index.size()))
+      throw common::InputError(shown, "entry " + std::to_string(line) + ": node id " + num(value) + " is not a node of the mesh");
+    return lattice.node_index[static_cast<std::size_t>(r)];
+  };
+  if (const json* list = bc.optional("velocity_constraints")) {
+    if (!list->is_array()) bc.fail("velocity_constraints", "expected an array");
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      StrictObject c((*list)[k], bc.file(), bc.path_of("velocity_constraints") + "[" + std::to_string(k) + "]");
+      if (c.has("file")) {  // lines "node dir velocity"
+        const std::string f = c.string("file");
+        const auto rows = read_columns(dir / f, f, 3);
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+          VelocityConstraint vc;
+          vc.nodes = {file_node(f, rows[r][0], static_cast<int>(r))};
+          if (rows[r][1] != 0 && rows[r][1] != 1)
+            throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
+          vc.dir = static_cast<int>(rows[r][1]);
+          vc.velocity = rows[r][2];
+          deck.velocity_constraints.push_back(vc);
+        }
+      } else {
+        VelocityConstraint vc;
+        vc.nodes = node_set(c);
+        vc.dir = direction(c);
+        vc.velocity = c.number("velocity");
+        deck.velocity_constraints.push_back(std::move(vc));
+      }
+      c.finish();
+    }
+  }
+  if (const json* list = bc.optional("friction_constraints")) {
+    if (!list->is_array()) bc.fail("friction_constraints", "expected an array");
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      StrictObject c((*list)[k], bc.file(), bc.path_of("friction_constraints") + "[" + std::to_string(k) + "]");
+      auto check = [&](double sign, double mu, const std::function<void(const std::string&)>& bad) {
+        if (sign != 1 && sign != -1) bad("sign_n must be -1 or 1");
+        if (!(mu >= 0)) bad("friction must be >= 0");
+      };
+      if (c.has("file")) {  // lines "node dir sign_n friction"
+        const std::string f = c.string("file");
+        const auto rows = read_columns(dir / f, f, 4);
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+          FrictionConstraint fc;
+          fc.nodes = {file_node(f, rows[r][0], static_cast<int>(r))};
+          if (rows[r][1] != 0 && rows[r][1] != 1)
+            throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
+          fc.dir = static_cast<int>(rows[r][1]);
+          check(rows[r][2], rows[r][3], [&](const std::string& w) { throw common::InputError(f, "entry " + std::to_string(r) + ": " + w); });
+          fc.sign_n = static_cast<int>(rows[r][2]);
+          fc.friction = rows[r][3];
+          deck.friction_constraints.push_back(fc);
+        }
+      } else {
+        FrictionConstraint fc;
+        fc.nodes = node_set(c);
+        fc.dir = direction(c);
+        const long long sign = c.integer("sign_n");
+        if (sign != 1 && sign != -1) c.fail("sign_n", "expected -1 or 1, got " + std::to_string(sign));
+        fc.sign_n = static_cast<int>(sign);
+        fc.friction = c.number("friction");
+        if (!(fc.friction >= 0)) c.fail("friction", "expected a number >= 0, got " + num(fc.friction));
+        deck.friction_constraints.push_back(std::move(fc));
+      }
+      c.finish();
+    }
+  }
+  bc.finish();
+}
+
+/// Gauss-Legendre points on [-1, 1] for n = 1..5 (the points of CB-Geo's quadrature of that order).
+std::vector<double> gauss_points(int n) {
+  switch (n) {
+    case 1: return {0.0};
+    case 2: return {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
+    case 3: return {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+    case 4: {
+      const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(1.2)), b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(1.2));
+      return {-b, -a, a, b};
+    }
+    default: {
+      const double a = std::sqrt(5 - 2 * std::sqrt(10.0 / 7)) / 3, b = std::sqrt(5 + 2 * std::sqrt(10.0 / 7)) / 3;
+      return {-b, -a, 0.0, a, b};
+    }
+  }
+}
+
+struct GeneratedParticles {
+  std::vector<ParticleRecord> records;
+  std::map<long long, std::vector<long long>> psets;  ///< from the generators' pset_id
+};
+
+void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattice, const EntitySets& sets,
+                     const fs::path& dir, bool load_files, GeneratedParticles& out) {
+  const json& list = root.required("particles");
+  if (!list.is_array() || list.empty()) root.fail("particles", "expected a non-empty array of {\"generator\": {...}}");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    StrictObject entry(list[k], root.file(), "particles[" + std::to_string(k) + "]");
+    StrictObject g = entry.object("generator");
+    const std::string type = g.string("type");
+    const long long material = g.integer("material_id");
+    if (!find_material(deck.materials, material))
+      g.fail("material_id", "material " + std::to_string(material) + " is not defined in materials");
+    g.accept_only("particle_type", {"P2D"}, "single-phase 2D particles");
+    g.accept_only("io_type", {"Ascii2D"}, "the only particle file format read");
+    g.boolean_or("check_duplicates", false);  // duplicates are always checked: no particle file may repeat a point
+    const long long pset = g.integer_or("pset_id", -1);
+    std::vector<Eigen::Vector2d> xs;
+    std::string shown;
+    if (type == "file") {
+      shown = g.string("location");
+      if (load_files) xs = read_particle_coordinates(dir / shown, shown);
+    } else if (type == "gauss") {
+      const long long nppd = g.integer("nparticles_per_dir");
+      if (nppd < 1 || nppd > 5) g.fail("nparticles_per_dir", "expected an integer in 1..5, got " + std::to_string(nppd));
+      const long long cset = g.integer("cset_id");
+      std::vector<long long> cells;
+      if (cset == -1) {
+        for (std::size_t c = 0; c < lattice.cell_ij.size(); ++c) cells.push_back(static_cast<long long>(c));
+      } else {
+        const auto it = sets.cells.find(cset);
+        if (it == sets.cells.end()) g.fail("cset_id", "cell set " + std::to_string(cset) + " is not defined in the entity sets");
+        cells = it->second;
+      }
+      const auto pts = gauss_points(static_cast<int>(nppd));
+      for (long long c : cells) {
+        const auto [i, j] = lattice.cell_ij[c];
+        const double xc = deck.grid.x0 + (i + 0.5) * deck.grid.hx, yc = deck.grid.y0 + (j + 0.5) * deck.grid.hy;
+        for (double eta : pts)
+          for (double xi : pts) xs.emplace_back(xc + 0.5 * deck.grid.hx * xi, yc + 0.5 * deck.grid.hy * eta);
+      }
+      shown = g.path_of("cset_id");
+    } else {
+      g.fail("type", "unsupported generator \"" + type + "\" (expected file or gauss)");
+    }
+    g.finish();
+    entry.finish();
+    for (std::size_t p = 0; p < xs.size(); ++p) {
+      ParticleRecord r{};
+      r.id = static_cast<std::int64_t>(out.records.size());
+      r.coord_x = xs[p].x();
+      r.coord_y = xs[p].y();
+      r.material_id = static_cast<std::uint32_t>(material);
+      r.status = 1;
+      r.cell_id = -1;
+      const Grid& gr = deck.grid;
+      if (!(r.coord_x >= gr.xmin && r.coord_x <= gr.xmax && r.coord_y >= gr.ymin && r.coord_y <= gr.ymax))
+        throw common::InputError(shown, "particle " + std::to_string(p) + " at (" + num(r.coord_x) + ", " + num(r.coord_y) +
+                                            ") is outside the grid's cells [" + num(gr.xmin) + ", " + num(gr.xmax) + "] x [" +
+                                            num(gr.ymin) + ", " + num(gr.ymax) + "]");
+      if (pset >= 0) out.psets[pset].push_back(r.id);
+      out.records.push_back(r);
+    }
+  }
+}
+
+/// Lattice cell of a point inside the grid (points on the upper edges belong to the last cell).
+long cell_of(const Grid& g, double x, double y) {
+  const int cells_x = g.nodes_x - 1, cells_y = g.nodes_y - 1;
+  const int i = std::clamp(static_cast<int>(std::floor((x - g.x0) / g.hx)), 0, cells_x - 1);
+  const int j = std::clamp(static_cast<int>(std::floor((y - g.y0) / g.hy)), 0, cells_y - 1);
+  return i + static_cast<long>(j) * cells_x;
+}
+
+void check_no_duplicates(const std::vector<ParticleRecord>& ps, const std::string& where) {
+  std::vector<std::pair<std::pair<double, double>, std::int64_t>> keyed;
+  for (const auto& p : ps) keyed.push_back({{p.coord_x, p.coord_y}, p.id});
+  std::sort(keyed.begin(), keyed.end());
+  for (std::size_t k = 1; k < keyed.size(); ++k)
+    if (keyed[k].first == keyed[k - 1].first)
+      throw common::InputError(where, "particles " + std::to_string(keyed[k - 1].second) + " and " +
+                                          std::to_string(keyed[k].second) + " are at the same point (" +
+                                          num(keyed[k].first.first) + ", " + num(keyed[k].first.second) + ")");
+}
+
+}  // namespace
+
+Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
+  const fs::path dir = working_dir;
+  const std::string shown = input_file;
+  const json j = parse_json_file(dir / input_file, shown);
+  StrictObject root(j, shown, "");
+  Deck deck;
+  deck.working_dir = dir;
+  root.string_or("title", "");
+
+  // analysis first: nsteps names the resume file.
+  ResumeSpec resume;
+  std::string uuid;
+  {
+    StrictObject a = root.object("analysis");
+    read_analysis(a, deck, resume, uuid);
+  }
+  deck.materials = read_materials(root);
+
+  // math_functions: nothing this program reads can use one, so any definition is an error.
+  if (const json* mf = root.optional("math_functions"))
+    if (!(mf->is_array() && mf->empty()))
+      root.fail("math_functions", "unsupported (no key read by this program takes a math_function_id); remove it or give []");
+
+  // external loads: gravity only.
+  if (const json* loads = root.optional("external_loading_conditions")) {
+    StrictObject l(*loads, shown, "external_loading_conditions");
+    const json& g = l.required("gravity");
+    if (!g.is_array() || g.size() != 2 || !g[0].is_number() || !g[1].is_number())
+      l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
+    deck.analysis.gravity = Eigen::Vector2d(g[0].get<double>(), g[1].get<double>());
+    l.finish();
+  }
+
+  // post_processing.
+  {
+    StrictObject pp = root.object("post_processing");
+    deck.output.path = pp.string_or("path", "results/");
+    deck.output.output_steps = pp.integer("output_steps");
+    if (deck.output.output_steps <= 0)
+      pp.fail("output_steps", "expected an integer > 0, got " + std::to_string(deck.output.output_steps));
+    pp.accept_only("vtk", {json::array()}, "VTK files are not written; ParaView opens results/<uuid>/particles.xdmf");
+    pp.accept_only("vtk_statevars", {json::array()}, "VTK files are not written; ParaView opens results/<uuid>/particles.xdmf");
+    pp.finish();
+  }
+
+  // mesh.
+  StrictObject mesh = root.object("mesh");
+  mesh.accept_only("io_type", {"Ascii2D"}, "the only mesh format read");
+  mesh.accept_only("node_type", {"N2D"}, "single-phase 2D nodes");
+  mesh.boolean_or("isoparametric", false);  // cells are rectangles: both mappings are the same
+  mesh.boolean_or("check_duplicates", false);  // the lattice check rejects duplicate nodes and cells always
+  const std::string cell_type = mesh.string("cell_type");
+  CellType type = CellType::Linear4;
+  if (cell_type == "ED2Q4") type = CellType::Linear4;
+  else if (cell_type == "ED2Q16G") type = CellType::Gimp16;
+  else mesh.fail("cell_type", "unsupported cell type \"" + cell_type + "\" (expected ED2Q4 or ED2Q16G)");
+  const std::string mesh_file = mesh.string("mesh");
+  const MeshFile mf = read_mesh_file(dir / mesh_file, mesh_file, type == CellType::Gimp16 ? 16 : 4);
+  const Lattice lattice = recognise_lattice(mf, type, mesh_file);
+  deck.grid = lattice.grid;
+
+  EntitySets sets;
+  if (const json* es = mesh.optional("entity_sets")) {
+    if (!es->is_string()) mesh.fail("entity_sets", "expected a file name");
+    const std::string f = es->get<std::string>();
+    sets = read_entity_sets(dir / f, f, static_cast<long long>(mf.nodes.size()), static_cast<long long>(mf.cells.size()));
+  }
+  if (const json* bc = mesh.optional("boundary_conditions")) {
+    StrictObject b(*bc, shown, "mesh.boundary_conditions");
+    read_boundary_conditions(b, lattice, sets, deck, dir);
+  }
+
+  // particles: generators, or the resume file.
+  GeneratedParticles gen;
+  read_generators(root, deck, lattice, sets, dir, !resume.resume, gen);
+  const auto stresses_key = mesh.optional("particles_stresses");
+  const auto volumes_key = mesh.optional("particles_volumes");
+  const auto cells_key = mesh.optional("particle_cells");
+  const bool update_materials = mesh.boolean_or("update_materials", false);
+  mesh.finish();
+
+  if (resume.resume) {
+    const fs::path file = dir / deck.output.path / resume.uuid / particle_file_name(resume.step, deck.analysis.nsteps);
+    const std::string rshown = (deck.output.path / resume.uuid / particle_file_name(resume.step, deck.analysis.nsteps)).string();
+    if (!fs::exists(file))
+      throw common::InputError(shown + ": analysis.resume", "resume file " + rshown + " not found (looked for " + file.string() + ")");
+    deck.particles = read_particle_table(file);
+    if (deck.particles.empty()) throw common::InputError(rshown, "the resume file holds no particles");
+    for (const auto& p : deck.particles) {
+      if (!find_material(deck.materials, p.material_id))
+        throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": material_id " + std::to_string(p.material_id) +
+                                             " is not defined in " + shown + " materials");
+      const Grid& g = deck.grid;
+      if (!(p.coord_x >= g.xmin && p.coord_x <= g.xmax && p.coord_y >= g.ymin && p.coord_y <= g.ymax))
+        throw common::InputError(rshown, "particle " + std::to_string(p.id) + " at (" + num(p.coord_x) + ", " + num(p.coord_y) +
+                                             ") is outside the grid's cells");
+      if (!(p.mass > 0) || !(p.volume > 0))
+        throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": mass and volume must be > 0");
+    }
+    std::sort(deck.particles.begin(), deck.particles.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+    for (std::size_t k = 1; k < deck.particles.size(); ++k)
+      if (deck.particles[k].id == deck.particles[k - 1].id)
+        throw common::InputError(rshown, "particle id " + std::to_string(deck.particles[k].id) + " appears twice");
+    deck.resumed = true;
+    deck.first_step = resume.step + 1;
+    // CB-Geo writes the resumed run's outputs under the resume uuid.
+    deck.output.uuid = resume.uuid;
+  } else {
+    deck.particles = std::move(gen.records);
+    check_no_duplicates(deck.particles, "particles");
+    const std::size_t n = deck.particles.size();
+    if (n == 0) throw common::InputError(shown + ": particles", "the generators produced no particles");
+    if (stresses_key) {
+      if (!stresses_key->is_string()) throw common::InputError(shown + ": mesh.particles_stresses", "expected a file name");
+      const std::string f = stresses_key->get<std::string>();
+      const auto s = read_particle_stresses(dir / f, f);
+      if (s.size() != n)
+        throw common::InputError(f, "has " + std::to_string(s.size()) + " stress lines for " + std::to_string(n) + " particles");
+      for (std::size_t k = 0; k < n; ++k) {
+        auto& p = deck.particles[k];
+        p.stress_xx = s[k][0]; p.stress_yy = s[k][1]; p.stress_zz = s[k][2];
+        p.tau_xy = s[k][3]; p.tau_yz = s[k][4]; p.tau_xz = s[k][5];
+      }
+    }
+    // Per-cell counts (CB-Geo's default volume and size use them).
+    std::map<long, int> per_cell;
+    for (const auto& p : deck.particles) ++per_cell[cell_of(deck.grid, p.coord_x, p.coord_y)];
+    if (volumes_key) {
+      if (!volumes_key->is_string()) throw common::InputError(shown + ": mesh.particles_volumes", "expected a file name");
+      const std::string f = volumes_key->get<std::string>();
+      for (const auto& row : read_columns(dir / f, f, 2)) {
+        const double id = row[0];
+        if (id != std::round(id) || id < 0 || id >= static_cast<double>(n))
+          throw common::InputError(f, "particle id " + num(id) + " is not a particle of the deck (0.." + std::to_string(n - 1) + ")");
+        if (!(row[1] > 0)) throw common::InputError(f, "particle " + num(id) + ": volume must be > 0, got " + num(row[1]));
+        auto& p = deck.particles[static_cast<std::size_t>(id)];
+        p.volume = row[1];
+        p.mass = find_material(deck.materials, p.material_id)->density * p.volume;
+        const double nsize = 2.0 / std::sqrt(static_cast<double>(per_cell[cell_of(deck.grid, p.coord_x, p.coord_y)]));
+        p.nsize_x = p.nsize_y = nsize;
+      }
+    }
+    if (cells_key) {
+      if (!cells_key->is_string()) throw common::InputError(shown + ": mesh.particle_cells", "expected a file name");
+      const std::string f = cells_key->get<std::string>();
+      for (const auto& row : read_columns(dir / f, f, 2)) {
+        const double pid = row[0], cid = row[1];
+        if (pid != std::round(pid) || pid < 0 || pid >= static_cast<double>(n))
+          throw common::InputError(f, "particle id " + num(pid) + " is not a particle of the deck");
+        if (cid != std::round(cid) || cid < 0 || cid >= static_cast<double>(lattice.cell_ij.size()))
+          throw common::InputError(f, "cell id " + num(cid) + " is not a cell of the mesh");
+        const auto& p = deck.particles[static_cast<std::size_t>(pid)];
+        const auto [i, j] = lattice.cell_ij[static_cast<std::size_t>(cid)];
+        const double x0 = deck.grid.x0 + i * deck.grid.hx, y0 = deck.grid.y0 + j * deck.grid.hy;
+        const double eps = 1e-9 * std::max(deck.grid.hx, deck.grid.hy);
+        if (p.coord_x < x0 - eps || p.coord_x > x0 + deck.grid.hx + eps || p.coord_y < y0 - eps || p.coord_y > y0 + deck.grid.hy + eps)
+          throw common::InputError(f, "particle " + num(pid) + " at (" + num(p.coord_x) + ", " + num(p.coord_y) +
+                                          ") is not inside cell " + num(cid));
+      }
+    }
+  }
+
+  // material_sets: applied (as in CB-Geo) only with mesh.update_materials true; never ignored silently.
+  if (const json* ms = root.optional("material_sets")) {
+    if (!ms->is_array()) root.fail("material_sets", "expected an array of {\"material_id\", \"pset_id\"}");
+    if (!ms->empty() && !update_materials)
+      root.fail("material_sets", "given but mesh.update_materials is not true (CB-Geo would ignore them silently)");
+    if (!ms->empty() && resume.resume)
+      root.fail("material_sets", "cannot be applied on resume (the resume file carries each particle's material_id)");
+    for (std::size_t k = 0; k < ms->size(); ++k) {
+      StrictObject s((*ms)[k], shown, "material_sets[" + std::to_string(k) + "]");
+      const long long mid = s.integer("material_id");
+      if (!find_material(deck.materials, mid)) s.fail("material_id", "material " + std::to_string(mid) + " is not defined in materials");
+      const long long pset = s.integer("pset_id");
+      const std::vector<long long>* members = nullptr;
+      if (auto it = sets.particles.find(pset); it != sets.particles.end()) members = &it->second;
+      else if (auto jt = gen.psets.find(pset); jt != gen.psets.end()) members = &jt->second;
+      if (!members) s.fail("pset_id", "particle set " + std::to_string(pset) + " is not defined");
+      for (long long id : *members) {
+        if (id >= static_cast<long long>(deck.particles.size()))
+          s.fail("pset_id", "particle set " + std::to_string(pset) + " names particle " + std::to_string(id) + ", which does not exist");
+        const auto& m = *find_material(deck.materials, mid);
+        auto& p = deck.particles[id];
+        p.material_id = m.id;
+        if (p.volume > 0) p.mass = m.density * p.volume;
+      }
+      s.finish();
+    }
+  } else if (update_materials) {
+    throw common::InputError(shown + ": mesh.update_materials", "true but no material_sets are given");
+  }
+  if (!resume.resume) {
+    for (const auto& [id, members] : sets.particles)
+      for (long long m : members)
+        if (m >= static_cast<long long>(deck.particles.size()))
+          throw common::InputError(shown + ": mesh.entity_sets", "particle set " + std::to_string(id) + " names particle " +
+                                                                    std::to_string(m) + ", which does not exist");
+  }
+
+  if (deck.output.uuid.empty()) deck.output.uuid = uuid.empty() ? fs::path(input_file).stem().string() : uuid;
+  if (deck.output.uuid.find('/') != std::string::npos || deck.output.uuid == "." || deck.output.uuid == "..")
+    throw common::InputError(shown + ": analysis.uuid", "\"" + deck.output.uuid + "\" must be a plain folder name");
+  root.finish();
+  return deck;
+}
+
+}  // namespace mpm::io

@@ -1,0 +1,135 @@
+#include "mpm/io/lattice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "common/input_error.hpp"
+
+namespace mpm::io {
+namespace {
+
+std::string point(const Eigen::Vector2d& p) {
+  std::ostringstream os;
+  os << "(" << p.x() << ", " << p.y() << ")";
+  return os.str();
+}
+
+/// Lattice spacing and line count along one axis: the smallest gap between distinct coordinates
+/// (coordinates closer than `noise` are the same line).
+struct Axis {
+  double origin = 0, spacing = 0;
+  int count = 1;
+};
+
+Axis find_axis(std::vector<double> values, const std::string& shown, const char* name) {
+  std::sort(values.begin(), values.end());
+  const double lo = values.front(), hi = values.back();
+  const double noise = 1e-9 * std::max({1.0, std::abs(lo), std::abs(hi)}) + 1e-6 * (hi - lo) / std::max<std::size_t>(values.size(), 1);
+  double gap = 0;
+  for (std::size_t k = 1; k < values.size(); ++k) {
+    const double d = values[k] - values[k - 1];
+    if (d > noise && (gap == 0 || d < gap)) gap = d;
+  }
+  Axis axis;
+  axis.origin = lo;
+  if (gap == 0) throw common::InputError(shown, std::string("all nodes have the same ") + name + " (a 2D grid needs at least 2 node columns and rows)");
+  axis.count = static_cast<int>(std::lround((hi - lo) / gap)) + 1;
+  axis.spacing = (hi - lo) / (axis.count - 1);
+  return axis;
+}
+
+}  // namespace
+
+const std::array<std::array<int, 2>, 16>& gimp_node_natural_coordinates() {
+  static const std::array<std::array<int, 2>, 16> xi = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1},
+                                                          {-3, -3}, {-1, -3}, {1, -3}, {3, -3},
+                                                          {3, -1}, {3, 1}, {3, 3}, {1, 3},
+                                                          {-1, 3}, {-3, 3}, {-3, 1}, {-3, -1}}};
+  return xi;
+}
+
+Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string& shown) {
+  std::vector<double> xs, ys;
+  for (const auto& p : mesh.nodes) {
+    xs.push_back(p.x());
+    ys.push_back(p.y());
+  }
+  const Axis ax = find_axis(xs, shown, "x"), ay = find_axis(ys, shown, "y");
+  if (static_cast<long long>(ax.count) * ay.count != static_cast<long long>(mesh.nodes.size()))
+    throw common::InputError(shown, "nodes do not form a uniform rectangular lattice: the coordinates span " +
+                                        std::to_string(ax.count) + " x " + std::to_string(ay.count) +
+                                        " lattice points but the file has " + std::to_string(mesh.nodes.size()) + " nodes");
+  Lattice out;
+  Grid& g = out.grid;
+  g.x0 = ax.origin;
+  g.y0 = ay.origin;
+  g.hx = ax.spacing;
+  g.hy = ay.spacing;
+  g.nodes_x = ax.count;
+  g.nodes_y = ay.count;
+  g.cell_type = type;
+
+  // Each node on a lattice point, each lattice point used once.
+  std::vector<int> owner(static_cast<std::size_t>(ax.count) * ay.count, -1);
+  out.node_index.resize(mesh.nodes.size());
+  const double tol = 1e-4;  // fraction of a cell: the files print 6 decimals
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+    const double fi = (mesh.nodes[n].x() - g.x0) / g.hx, fj = (mesh.nodes[n].y() - g.y0) / g.hy;
+    const long i = std::lround(fi), j = std::lround(fj);
+    if (std::abs(fi - i) > tol || std::abs(fj - j) > tol)
+      throw common::InputError(shown, "nodes do not form a uniform rectangular lattice: node " + std::to_string(n) + " at " +
+                                          point(mesh.nodes[n]) + " is off the lattice of spacing " +
+                                          std::to_string(g.hx) + " x " + std::to_string(g.hy));
+    const std::size_t k = static_cast<std::size_t>(i + j * g.nodes_x);
+    if (owner[k] >= 0)
+      throw common::InputError(shown, "nodes " + std::to_string(owner[k]) + " and " + std::to_string(n) +
+                                          " are at the same point " + point(mesh.nodes[n]));
+    owner[k] = static_cast<int>(n);
+    out.node_index[n] = static_cast<int>(k);
+  }
+
+  // Each cell a lattice cell with its nodes in CB-Geo's order.
+  static const std::array<std::array<int, 2>, 4> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+  const int per_cell = type == CellType::Gimp16 ? 16 : 4;
+  std::set<std::pair<int, int>> used;
+  int imin = g.nodes_x, imax = -1, jmin = g.nodes_y, jmax = -1;
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+    const auto& ids = mesh.cells[c];
+    const int k0 = out.node_index[ids[0]];
+    const int i0 = k0 % g.nodes_x, j0 = k0 / g.nodes_x;
+    for (int m = 0; m < per_cell; ++m) {
+      const auto xi = per_cell == 16 ? gimp_node_natural_coordinates()[m] : corners[m];
+      const int i = i0 + (xi[0] + 1) / 2, j = j0 + (xi[1] + 1) / 2;
+      const bool inside = i >= 0 && j >= 0 && i < g.nodes_x && j < g.nodes_y;
+      if (!inside || out.node_index[ids[m]] != i + j * g.nodes_x)
+        throw common::InputError(shown, "cell " + std::to_string(c) + ": node " + std::to_string(m) + " (id " +
+                                            std::to_string(ids[m]) + ") is not where a rectangular " +
+                                            (per_cell == 16 ? "ED2Q16G" : "ED2Q4") +
+                                            " cell has it (natural coordinates (" + std::to_string(xi[0]) + ", " +
+                                            std::to_string(xi[1]) + ") from corner node " + std::to_string(ids[0]) +
+                                            "; corners counter-clockwise from the lower left" +
+                                            (per_cell == 16 ? ", then the ring from (-3,-3)" : "") + ")");
+    }
+    if (i0 + 1 >= g.nodes_x || j0 + 1 >= g.nodes_y)
+      throw common::InputError(shown, "cell " + std::to_string(c) + " lies outside the node lattice");
+    if (!used.insert({i0, j0}).second)
+      throw common::InputError(shown, "cell " + std::to_string(c) + " duplicates another cell at the same place");
+    out.cell_ij.push_back({i0, j0});
+    imin = std::min(imin, i0); imax = std::max(imax, i0);
+    jmin = std::min(jmin, j0); jmax = std::max(jmax, j0);
+  }
+  const long long full = static_cast<long long>(imax - imin + 1) * (jmax - jmin + 1);
+  if (full != static_cast<long long>(mesh.cells.size()))
+    throw common::InputError(shown, "cells do not form a rectangle: they span " + std::to_string(imax - imin + 1) + " x " +
+                                        std::to_string(jmax - jmin + 1) + " cells but the file has " +
+                                        std::to_string(mesh.cells.size()));
+  g.xmin = g.x0 + imin * g.hx;
+  g.xmax = g.x0 + (imax + 1) * g.hx;
+  g.ymin = g.y0 + jmin * g.hy;
+  g.ymax = g.y0 + (jmax + 1) * g.hy;
+  return out;
+}
+
+}  // namespace mpm::io

@@ -1,0 +1,73 @@
+// mpm: the explicit MPM engine with CB-Geo's command line and input deck.
+//   mpm -f <working_dir>/ -i mpm.json [--threads N]
+// Exit status: 0 done; 2 bad input (nothing written); 3 numerical failure (the last good state is
+// written, resumable); 1 any other failure (e.g. a file that cannot be written).
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "common/input_error.hpp"
+#include "mpm/core/simulation.hpp"
+#include "mpm/io/deck_reader.hpp"
+#include "mpm/io/progress.hpp"
+#include "mpm/io/results.hpp"
+
+namespace {
+
+int run(const std::string& working_dir, const std::string& input_file, int threads) {
+  const mpm::io::Deck deck = mpm::io::read_deck(working_dir, input_file);
+  mpm::core::Simulation sim(deck, threads);
+  mpm::io::ResultsWriter results(deck);
+  mpm::io::ProgressLine progress(deck.first_step, deck.analysis.nsteps);
+  const long long nsteps = deck.analysis.nsteps, every = deck.output.output_steps;
+  try {
+    while (sim.step_index() < nsteps) {
+      const long long step = sim.step_index();
+      sim.step();
+      if (step % every == 0) results.write_output(step, sim.time(), sim.dt(), sim.snapshot());
+      progress.update(step, sim.time(), sim.dt(), sim.particle_count());
+    }
+  } catch (const common::NumericalError& e) {
+    progress.finish();
+    // The engine keeps the state of the last completed step (loop step step_index() - 1).
+    const long long last = sim.step_index() - 1;
+    std::string saved = "no step completed, nothing written";
+    if (last >= deck.first_step) saved = "last good state (step " + std::to_string(last) + ") written to " +
+                                         results.write_state(last, sim.time(), sim.snapshot()).string();
+    std::fprintf(stderr, "mpm: %s; %s\n", e.what(), saved.c_str());
+    return 3;
+  }
+  progress.finish();
+  if (sim.step_index() > deck.first_step && (sim.step_index() - 1) % every != 0)
+    results.write_series_row(sim.step_index() - 1, sim.time(), sim.dt(), sim.snapshot());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"mpm: explicit material point method (CB-Geo MPM input decks and particle files)"};
+  std::string working_dir, input_file = "mpm.json";
+  int threads = 0;
+  app.add_option("-f,--working_dir", working_dir, "working folder holding the deck (CB-Geo: must end with /)")->required();
+  app.add_option("-i,--input_file", input_file, "input JSON file in the working folder")->capture_default_str();
+  app.add_option("-p,--threads,--parallel", threads, "threads (0: OpenMP's default)")->check(CLI::NonNegativeNumber);
+  app.set_version_flag("-v,--version", std::string("mpm (geoflow) ") + GEOFLOW_VERSION);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return run(working_dir, input_file, threads);
+  } catch (const common::InputError& e) {
+    std::fprintf(stderr, "mpm: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mpm: %s\n", e.what());
+    return 1;
+  }
+}
