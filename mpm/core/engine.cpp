@@ -1,0 +1,798 @@
+#include "mpm/core/engine.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "common/input_error.hpp"
+#include "mpm/core/shape_functions.hpp"
+
+namespace mpm::core {
+
+namespace {
+/// Nodes with less mass take no part in the grid update (CB-Geo's tolerance, include/node.tcc).
+constexpr double kMassTolerance = 1.0e-15;
+
+double sign_of(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
+
+std::string format_double(double v) {
+  std::ostringstream os;
+  os.precision(10);
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+StressSmoothing parse_stress_smoothing(const std::string& name) {
+  if (name == "none" || name.empty()) return StressSmoothing::None;
+  if (name == "cell_volumetric") return StressSmoothing::CellVolumetric;
+  throw common::InputError("analysis.stress_smoothing", "expected \"none\" or \"cell_volumetric\", got \"" + name + "\"");
+}
+
+void ParticleArrays::resize(std::size_t n) {
+  id.resize(n);
+  material.resize(n);
+  for (auto* v : {&mass, &volume, &nsize_x, &nsize_y, &lx, &ly, &x, &y, &ux, &uy, &vx, &vy, &sxx, &syy, &szz,
+                  &sxy, &exx, &eyy, &gxy, &epsv})
+    v->resize(n);
+  svars.resize(n * kStateVariables);
+  key.resize(n);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Construction
+// ---------------------------------------------------------------------------------------------------
+
+Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
+  const io::Analysis& an = deck.analysis;
+  nx_ = grid_.nodes_x;
+  ny_ = grid_.nodes_y;
+  if (nx_ < 2 || ny_ < 2 || !(grid_.hx > 0) || !(grid_.hy > 0))
+    throw common::InputError("mesh", "the node lattice needs at least 2 x 2 nodes and a positive cell size");
+  cells_x_ = nx_ - 1;
+  cells_y_ = ny_ - 1;
+  nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  const bool gimp = grid_.cell_type == io::CellType::Gimp16;
+  if (gimp) {
+    // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
+    const double tol = 1e-9;
+    if (grid_.xmin - grid_.x0 < grid_.hx * (1 - tol) || grid_.ymin - grid_.y0 < grid_.hy * (1 - tol) ||
+        grid_.x0 + (nx_ - 1) * grid_.hx - grid_.xmax < grid_.hx * (1 - tol) ||
+        grid_.y0 + (ny_ - 1) * grid_.hy - grid_.ymax < grid_.hy * (1 - tol))
+      throw common::InputError("mesh", "ED2Q16G cells need a ring of halo nodes around the cells that hold particles");
+  }
+
+  scheme_ = an.scheme;
+  pic_ = an.velocity_update ? 1.0 : an.pic_blend;
+  if (!(pic_ >= 0.0 && pic_ <= 1.0))
+    throw common::InputError("analysis.pic_blend", "expected a number in [0, 1], got " + format_double(pic_));
+  locate_ = an.locate_particles;
+  damping_ = an.cundall_damping;
+  if (!(damping_ >= 0.0 && damping_ < 1.0))
+    throw common::InputError("analysis.damping.damping_factor", "expected a number in [0, 1), got " + format_double(damping_));
+  gx_ = an.gravity.x();
+  gy_ = an.gravity.y();
+  smoothing_ = parse_stress_smoothing(an.stress_smoothing);
+  step_index_ = deck.first_step;
+  threads_ = threads > 0 ? threads : omp_get_max_threads();
+  if (threads_ < 1) threads_ = 1;
+
+  // Materials, and the time step: dt from the deck, or cfl * h / c_p (c_p = sqrt((K + 4G/3) / rho)).
+  if (deck.materials.empty()) throw common::InputError("materials", "no material defined");
+  double max_wave_speed = 0.0;
+  for (const auto& spec : deck.materials) {
+    if (!(spec.density > 0)) throw common::InputError("materials", "material " + std::to_string(spec.id) + ": density must be > 0");
+    materials_.push_back(Material::from(spec));
+    max_wave_speed = std::max(max_wave_speed, std::sqrt(materials_.back().p_wave_modulus / spec.density));
+  }
+  dt_ = an.dt;
+  if (an.cfl > 0) {
+    const double auto_dt = an.cfl * std::min(grid_.hx, grid_.hy) / max_wave_speed;
+    dt_ = (an.dt > 0) ? std::min(an.dt, auto_dt) : auto_dt;
+  }
+  if (!(dt_ > 0) || !std::isfinite(dt_)) throw common::InputError("analysis.dt", "expected a time step > 0");
+
+  // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).
+  fixed_.assign(nodes_, 0);
+  fixed_velocity_.assign(2 * nodes_, 0.0);
+  friction_dir_.assign(nodes_, -1);
+  friction_sign_.assign(nodes_, -1);
+  friction_mu_.assign(nodes_, 0.0);
+  for (const auto& c : deck.velocity_constraints) {
+    if (c.dir < 0 || c.dir > 1) throw common::InputError("velocity_constraints", "dir must be 0 or 1");
+    for (int n : c.nodes) {
+      if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
+        throw common::InputError("velocity_constraints", "node " + std::to_string(n) + " is not in the mesh");
+      fixed_[n] |= static_cast<std::uint8_t>(1u << c.dir);
+      fixed_velocity_[2 * n + c.dir] = c.velocity;
+    }
+  }
+  for (const auto& c : deck.friction_constraints) {
+    if (c.dir < 0 || c.dir > 1) throw common::InputError("friction_constraints", "dir must be 0 or 1");
+    for (int n : c.nodes) {
+      if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
+        throw common::InputError("friction_constraints", "node " + std::to_string(n) + " is not in the mesh");
+      friction_dir_[n] = static_cast<std::int8_t>(c.dir);
+      friction_sign_[n] = static_cast<std::int8_t>(c.sign_n > 0 ? 1 : -1);
+      friction_mu_[n] = c.friction;
+    }
+  }
+
+  // Particles.
+  const std::size_t n = deck.particles.size();
+  cur_.resize(n);
+  nxt_.resize(n);
+  std::vector<std::uint32_t> per_cell(static_cast<std::size_t>(cells_x_) * cells_y_, 0);
+  for (std::size_t p = 0; p < n; ++p) {
+    const io::ParticleRecord& r = deck.particles[p];
+    const std::string who = "particle " + std::to_string(r.id);
+    if (!std::isfinite(r.coord_x) || !std::isfinite(r.coord_y) || r.coord_x < grid_.xmin || r.coord_x > grid_.xmax ||
+        r.coord_y < grid_.ymin || r.coord_y > grid_.ymax)
+      throw common::InputError(who, "at (" + format_double(r.coord_x) + ", " + format_double(r.coord_y) +
+                                        ") is outside the mesh");
+    std::size_t m = materials_.size();
+    for (std::size_t i = 0; i < materials_.size(); ++i)
+      if (materials_[i].id == r.material_id) m = i;
+    if (m == materials_.size())
+      throw common::InputError(who, "material_id " + std::to_string(r.material_id) + " is not defined");
+    if (m != 0) uniform_material_ = false;
+    cur_.id[p] = r.id;
+    cur_.material[p] = static_cast<std::uint32_t>(m);
+    cur_.x[p] = r.coord_x;
+    cur_.y[p] = r.coord_y;
+    cur_.key[p] = cell_key(r.coord_x, r.coord_y);
+    ++per_cell[static_cast<std::size_t>(cur_.key[p])];
+  }
+  for (std::size_t p = 0; p < n; ++p) {
+    const io::ParticleRecord& r = deck.particles[p];
+    const Material& mat = materials_[cur_.material[p]];
+    if (r.volume > 0) {
+      cur_.volume[p] = r.volume;
+      cur_.mass[p] = r.mass > 0 ? r.mass : mat.density * r.volume;
+      cur_.nsize_x[p] = r.nsize_x;
+      cur_.nsize_y[p] = r.nsize_y;
+    } else {
+      // CB-Geo defaults: volume = cell area / particles in the cell, mass = density * volume,
+      // nsize = 2 / sqrt(particles in the cell) (2 / particles per direction).
+      const double count = per_cell[static_cast<std::size_t>(cur_.key[p])];
+      cur_.volume[p] = grid_.hx * grid_.hy / count;
+      cur_.mass[p] = mat.density * cur_.volume[p];
+      cur_.nsize_x[p] = cur_.nsize_y[p] = 2.0 / std::sqrt(count);
+    }
+    if (gimp && !(cur_.nsize_x[p] > 0 && cur_.nsize_x[p] <= 2 && cur_.nsize_y[p] > 0 && cur_.nsize_y[p] <= 2))
+      throw common::InputError("particle " + std::to_string(r.id), "nsize must be in (0, 2] for ED2Q16G cells");
+    cur_.lx[p] = cur_.nsize_x[p] / 4.0;
+    cur_.ly[p] = cur_.nsize_y[p] / 4.0;
+    cur_.ux[p] = r.displacement_x;
+    cur_.uy[p] = r.displacement_y;
+    cur_.vx[p] = r.velocity_x;
+    cur_.vy[p] = r.velocity_y;
+    cur_.sxx[p] = r.stress_xx;
+    cur_.syy[p] = r.stress_yy;
+    cur_.szz[p] = r.stress_zz;
+    cur_.sxy[p] = r.tau_xy;
+    cur_.exx[p] = r.strain_xx;
+    cur_.eyy[p] = r.strain_yy;
+    cur_.gxy[p] = r.gamma_xy;
+    cur_.epsv[p] = r.epsilon_v;
+    double* sv = &cur_.svars[p * kStateVariables];
+    if (mat.state_count > 0 && r.nstate_vars == mat.state_count) {
+      for (std::size_t i = 0; i < mat.state_count; ++i) sv[i] = r.svars[i];
+    } else if (mat.type == io::MaterialType::MohrCoulomb2D) {
+      mat.mohr_coulomb.initial_state(sv);
+    }
+  }
+
+  // Scratch, sized once (no allocation per step).
+  const int width = gimp ? GimpShape::kWidth : LinearShape::kWidth;
+  base_.resize(n);
+  weights_.resize(n * 4 * static_cast<std::size_t>(width));
+  dstrain_.resize(3 * n);
+  order_.reserve(n);
+  sorted_.resize(n);
+  bucket_.resize(static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
+  chunk_.resize(static_cast<std::size_t>(threads_) + 1);
+  mass_.assign(nodes_, 0.0);
+  momentum_.assign(2 * nodes_, 0.0);
+  force_.assign(2 * nodes_, 0.0);
+  velocity_.assign(2 * nodes_, 0.0);
+  updated_.assign(4 * nodes_, 0.0);
+  thread_grid_.assign(static_cast<std::size_t>(threads_), std::vector<double>(5 * nodes_, 0.0));
+  problems_.resize(static_cast<std::size_t>(threads_));
+
+  order_.resize(n);
+  for (std::size_t p = 0; p < n; ++p) order_[p] = static_cast<std::uint32_t>(p);
+  sort_particles();
+}
+
+std::int64_t Engine::cell_key(double x, double y) const {
+  int i = static_cast<int>(std::floor((x - grid_.x0) / grid_.hx));
+  int j = static_cast<int>(std::floor((y - grid_.y0) / grid_.hy));
+  i = std::clamp(i, 0, cells_x_ - 1);
+  j = std::clamp(j, 0, cells_y_ - 1);
+  return static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_x_;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Sorting: order_ = live particles by (cell, id). A counting sort by cell of the previous order, then
+// an insertion sort by id inside each cell (nearly sorted already). The result depends only on the
+// particle state, so a resumed run iterates in the same order as the uninterrupted one.
+// ---------------------------------------------------------------------------------------------------
+void Engine::sort_particles() {
+  std::fill(bucket_.begin(), bucket_.end(), 0u);
+  // order_ holds the storage indices to sort, in their previous order (nearly sorted already).
+  const std::size_t n_old = order_.size();
+  for (std::size_t k = 0; k < n_old; ++k) {
+    const std::int64_t key = cur_.key[order_[k]];
+    if (key != kRemoved) ++bucket_[static_cast<std::size_t>(key) + 1];
+  }
+  int cmin_i = cells_x_, cmax_i = -1, cmin_j = cells_y_, cmax_j = -1;
+  for (std::size_t c = 0; c + 1 < bucket_.size(); ++c) {
+    if (bucket_[c + 1] > 0) {
+      const int i = static_cast<int>(c % static_cast<std::size_t>(cells_x_));
+      const int j = static_cast<int>(c / static_cast<std::size_t>(cells_x_));
+      cmin_i = std::min(cmin_i, i);
+      cmax_i = std::max(cmax_i, i);
+      cmin_j = std::min(cmin_j, j);
+      cmax_j = std::max(cmax_j, j);
+    }
+    bucket_[c + 1] += bucket_[c];
+  }
+  const std::size_t n = bucket_.back();
+  for (std::size_t k = 0; k < n_old; ++k) {
+    const std::uint32_t p = order_[k];
+    const std::int64_t key = cur_.key[p];
+    if (key != kRemoved) sorted_[bucket_[static_cast<std::size_t>(key)]++] = p;
+  }
+  // bucket_[c] now holds the end of cell c; sort each cell's run by id.
+  std::size_t start = 0;
+  for (std::size_t c = 0; c + 1 < bucket_.size(); ++c) {
+    const std::size_t end = bucket_[c];
+    for (std::size_t a = start + 1; a < end; ++a) {
+      const std::uint32_t p = sorted_[a];
+      const std::int64_t id = cur_.id[p];
+      std::size_t b = a;
+      while (b > start && cur_.id[sorted_[b - 1]] > id) {
+        sorted_[b] = sorted_[b - 1];
+        --b;
+      }
+      sorted_[b] = p;
+    }
+    start = end;
+  }
+  order_.assign(sorted_.begin(), sorted_.begin() + static_cast<std::ptrdiff_t>(n));
+
+  // Active node box: every node a particle's stencil can reach (cell - 1 .. cell + 2).
+  if (n == 0) {
+    bi0_ = bi1_ = bj0_ = bj1_ = 0;
+  } else {
+    bi0_ = std::max(cmin_i - 1, 0);
+    bi1_ = std::min(cmax_i + 3, nx_);
+    bj0_ = std::max(cmin_j - 1, 0);
+    bj1_ = std::min(cmax_j + 3, ny_);
+  }
+  // Thread chunks of about n / threads particles, each cut at a cell boundary.
+  chunk_[0] = 0;
+  for (int t = 1; t < threads_; ++t) {
+    std::size_t k = std::max(chunk_[t - 1], n * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads_));
+    while (k > 0 && k < n && cur_.key[order_[k]] == cur_.key[order_[k - 1]]) ++k;
+    chunk_[t] = k;
+  }
+  chunk_[threads_] = n;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The step
+// ---------------------------------------------------------------------------------------------------
+void Engine::step() {
+  for (auto& p : problems_) p = Problem{};
+  const bool gimp = grid_.cell_type == io::CellType::Gimp16;
+#pragma omp parallel num_threads(threads_)
+  {
+    const int t = omp_get_thread_num();
+    if (gimp)
+      run_step<GimpShape>(t);
+    else
+      run_step<LinearShape>(t);
+  }
+  throw_first_error();
+  std::swap(cur_, nxt_);
+  // The next buffer was written in iteration order: storage index k is the particle of iteration k.
+  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
+  sort_particles();
+  ++step_index_;
+}
+
+/// One explicit step; USF, USL and MUSL differ only in the order of the calls (CB-Geo
+/// include/solvers/mpm_scheme/mpm_scheme_{usf,usl,musl}.tcc; Bardenhagen 2002 for USF/USL, Sulsky,
+/// Zhou & Schreyer 1995 for MUSL). Each barrier separates a particle phase from a node phase.
+template <class Shape>
+void Engine::run_step(int t) {
+  switch (scheme_) {
+    case io::Scheme::USF:  // update stress first: strain rate from the momentum velocity
+      p2g<Shape>(t, /*shape_functions=*/true, /*mass_momentum=*/true, /*forces=*/false);
+#pragma omp barrier
+      reduce_grid(t, true, true, false);
+#pragma omp barrier
+      compute_nodal_velocity(t);
+#pragma omp barrier
+      update_stress<Shape>(t, velocity_.data(), 2, /*from_next=*/false);
+      p2g<Shape>(t, false, false, /*forces=*/true);  // forces from the updated stress (next buffer)
+#pragma omp barrier
+      reduce_grid(t, false, false, true);
+#pragma omp barrier
+      integrate_nodes(t);
+#pragma omp barrier
+      g2p<Shape>(t);
+      break;
+    case io::Scheme::USL:  // update stress last: strain rate from the updated grid velocity
+      p2g<Shape>(t, true, true, true);
+#pragma omp barrier
+      reduce_grid(t, true, true, true);
+#pragma omp barrier
+      compute_nodal_velocity(t);
+      integrate_nodes(t);
+#pragma omp barrier
+      g2p<Shape>(t);
+      update_stress<Shape>(t, updated_.data(), 4, false);
+      break;
+    case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
+      p2g<Shape>(t, true, true, true);
+#pragma omp barrier
+      reduce_grid(t, true, true, true);
+#pragma omp barrier
+      compute_nodal_velocity(t);
+      integrate_nodes(t);
+#pragma omp barrier
+      g2p<Shape>(t);
+      p2g_momentum_of_updated_velocity(t);
+#pragma omp barrier
+      reduce_grid(t, false, true, false);
+#pragma omp barrier
+      compute_nodal_velocity(t);
+#pragma omp barrier
+      update_stress<Shape>(t, velocity_.data(), 2, false);
+      break;
+  }
+}
+
+/// Particle-to-grid transfer (Sulsky et al. 1994, eqs. 14-17): nodal mass sum m N, momentum sum m N v,
+/// force sum m N g - V grad(N) . sigma. With `shape_functions` the particle's weights are computed
+/// (once per step) and stored for the later phases. Reads the current particle state through order_,
+/// except the forces of USF, which use the stress and volume just updated (next buffer).
+template <class Shape>
+void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
+  constexpr int W = Shape::kWidth;
+  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
+  const double ihx = 1.0 / grid_.hx, ihy = 1.0 / grid_.hy;
+  const bool forces_from_next = forces && !mass_momentum;
+  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+    const std::uint32_t p = order_[k];
+    double* wk = &weights_[k * 4 * W];
+    if (shape_functions) {
+      int bi = 0, bj = 0;
+      Shape::eval((cur_.x[p] - grid_.x0) * ihx, cur_.lx[p], cells_x_ - 1, bi, wk, wk + 2 * W);
+      Shape::eval((cur_.y[p] - grid_.y0) * ihy, cur_.ly[p], cells_y_ - 1, bj, wk + W, wk + 3 * W);
+      for (int a = 0; a < W; ++a) {
+        wk[2 * W + a] *= ihx;
+        wk[3 * W + a] *= ihy;
+      }
+      base_[k] = bi + bj * nx_;
+    }
+    const double* wx = wk;
+    const double* wy = wk + W;
+    const double* dwx = wk + 2 * W;
+    const double* dwy = wk + 3 * W;
+    const double m = cur_.mass[p];
+    const double mvx = m * cur_.vx[p], mvy = m * cur_.vy[p];
+    double V, sxx, syy, sxy;
+    if (forces_from_next) {
+      V = nxt_.volume[k];
+      sxx = nxt_.sxx[k];
+      syy = nxt_.syy[k];
+      sxy = nxt_.sxy[k];
+    } else {
+      V = cur_.volume[p];
+      sxx = cur_.sxx[p];
+      syy = cur_.syy[p];
+      sxy = cur_.sxy[p];
+    }
+    const double mgx = m * gx_, mgy = m * gy_;
+    std::size_t node_row = static_cast<std::size_t>(base_[k]);
+    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+      double* gn = g + 5 * node_row;
+      for (int a = 0; a < W; ++a, gn += 5) {
+        const double N = wx[a] * wy[b];
+        if (mass_momentum) {
+          gn[0] += m * N;
+          gn[1] += mvx * N;
+          gn[2] += mvy * N;
+        }
+        if (forces) {
+          const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
+          gn[3] += mgx * N - V * (dx * sxx + dy * sxy);
+          gn[4] += mgy * N - V * (dx * sxy + dy * syy);
+        }
+      }
+    }
+  }
+}
+
+/// MUSL's second transfer: momentum sum m N v of the particle velocity just updated (Sulsky, Zhou &
+/// Schreyer 1995, eq. 20); the nodal mass of the step is reused.
+void Engine::p2g_momentum_of_updated_velocity(int t) {
+  const int W = grid_.cell_type == io::CellType::Gimp16 ? GimpShape::kWidth : LinearShape::kWidth;
+  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
+  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+    const double* wx = &weights_[k * 4 * W];
+    const double* wy = wx + W;
+    const double m = cur_.mass[order_[k]];
+    const double mvx = m * nxt_.vx[k], mvy = m * nxt_.vy[k];
+    std::size_t node_row = static_cast<std::size_t>(base_[k]);
+    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+      double* gn = g + 5 * node_row;
+      for (int a = 0; a < W; ++a, gn += 5) {
+        const double N = wx[a] * wy[b];
+        gn[1] += mvx * N;
+        gn[2] += mvy * N;
+      }
+    }
+  }
+}
+
+/// Sums the per-thread grids in thread order (deterministic) over this thread's rows of the active box,
+/// and zeroes what it summed (the buffers are zero between transfers).
+void Engine::reduce_grid(int t, bool mass, bool momentum, bool forces) {
+  const int rows = bj1_ - bj0_;
+  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
+  for (int j = j0; j < j1; ++j) {
+    for (int i = bi0_; i < bi1_; ++i) {
+      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+      double s[5] = {0, 0, 0, 0, 0};
+      for (auto& buf : thread_grid_) {
+        double* gn = &buf[5 * n];
+        for (int f = 0; f < 5; ++f) {
+          s[f] += gn[f];
+          gn[f] = 0.0;
+        }
+      }
+      if (mass) mass_[n] = s[0];
+      if (momentum) {
+        momentum_[2 * n] = s[1];
+        momentum_[2 * n + 1] = s[2];
+      }
+      if (forces) {
+        force_[2 * n] = s[3];
+        force_[2 * n + 1] = s[4];
+      }
+    }
+  }
+}
+
+/// Nodal velocity = momentum / mass, then the velocity constraints (CB-Geo Node::compute_velocity).
+void Engine::compute_nodal_velocity(int t) {
+  const int rows = bj1_ - bj0_;
+  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
+  for (int j = j0; j < j1; ++j) {
+    for (int i = bi0_; i < bi1_; ++i) {
+      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+      double vx = 0.0, vy = 0.0;
+      if (mass_[n] > kMassTolerance) {
+        vx = momentum_[2 * n] / mass_[n];
+        vy = momentum_[2 * n + 1] / mass_[n];
+      }
+      if (fixed_[n] & 1u) vx = fixed_velocity_[2 * n];
+      if (fixed_[n] & 2u) vy = fixed_velocity_[2 * n + 1];
+      velocity_[2 * n] = vx;
+      velocity_[2 * n + 1] = vy;
+    }
+  }
+}
+
+/// CB-Geo's friction constraint (include/node.tcc apply_friction_constraints; FORMATS.md section 5): while
+/// the normal acceleration pushes into the boundary (a_n * sign_n > 0), Coulomb friction mu |a_n| acts
+/// on the tangential acceleration: static (a_t = 0) if |a_t| <= mu |a_n| at rest, else reduced by
+/// mu |a_n| against the motion, and never reversing the tangential velocity within the step.
+void Engine::apply_friction(std::size_t n, double& ax, double& ay, double vx, double vy) const {
+  const int dn = friction_dir_[n];
+  const double sn = friction_sign_[n];
+  const double mu = friction_mu_[n];
+  const double an = dn == 0 ? ax : ay;
+  double at = dn == 0 ? ay : ax;
+  const double vt = dn == 0 ? vy : vx;
+  if (an * sn <= 0.0) return;
+  const double limit = mu * std::abs(an);
+  auto sgn = [](double v) { return v > 0.0 ? 1.0 : -1.0; };
+  if (vt != 0.0) {  // kinetic
+    const double v_net = vt + dt_ * at;
+    if (std::abs(v_net) <= dt_ * limit)
+      at = -vt / dt_;
+    else
+      at -= sgn(v_net) * limit;
+  } else if (std::abs(at) <= limit) {  // static
+    at = 0.0;
+  } else {
+    at -= sgn(at) * limit;
+  }
+  (dn == 0 ? ay : ax) = at;
+}
+
+/// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m with Cundall's local damping
+/// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), friction, then
+/// v_new = v + a dt, and the velocity constraints (prescribed velocity, zero acceleration).
+void Engine::integrate_nodes(int t) {
+  const int rows = bj1_ - bj0_;
+  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
+  for (int j = j0; j < j1; ++j) {
+    for (int i = bi0_; i < bi1_; ++i) {
+      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+      double* u = &updated_[4 * n];
+      const double m = mass_[n];
+      if (!(m > kMassTolerance)) {
+        u[0] = u[1] = u[2] = u[3] = 0.0;
+        continue;
+      }
+      const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
+      double fx = force_[2 * n], fy = force_[2 * n + 1];
+      if (damping_ > 0.0) {
+        const double fn = std::sqrt(fx * fx + fy * fy);
+        fx -= damping_ * fn * sign_of(vx);
+        fy -= damping_ * fn * sign_of(vy);
+      }
+      double ax = fx / m, ay = fy / m;
+      if (friction_dir_[n] >= 0) apply_friction(n, ax, ay, vx, vy);
+      double wx = vx + ax * dt_, wy = vy + ay * dt_;
+      if (fixed_[n] & 1u) {
+        wx = fixed_velocity_[2 * n];
+        ax = 0.0;
+      }
+      if (fixed_[n] & 2u) {
+        wy = fixed_velocity_[2 * n + 1];
+        ay = 0.0;
+      }
+      u[0] = wx;
+      u[1] = wy;
+      u[2] = ax;
+      u[3] = ay;
+    }
+  }
+}
+
+void Engine::report(int t, std::size_t k, int kind, std::int64_t id, double a, double b) {
+  Problem& pr = problems_[static_cast<std::size_t>(t)];
+  if (k < pr.k) pr = Problem{k, kind, id, a, b};
+}
+
+/// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
+/// FLIP v += dt sum N a, PIC v = sum N v_new, blended by pic_; x += dt sum N v_new.
+/// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
+/// the mesh region (an error, or removed when locate_particles is false).
+template <class Shape>
+void Engine::g2p(int t) {
+  constexpr int W = Shape::kWidth;
+  const double h = std::min(grid_.hx, grid_.hy);
+  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+    const std::uint32_t p = order_[k];
+    const double* wx = &weights_[k * 4 * W];
+    const double* wy = wx + W;
+    double vgx = 0, vgy = 0, agx = 0, agy = 0;
+    std::size_t node_row = static_cast<std::size_t>(base_[k]);
+    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+      const double* u = &updated_[4 * node_row];
+      for (int a = 0; a < W; ++a, u += 4) {
+        const double N = wx[a] * wy[b];
+        vgx += N * u[0];
+        vgy += N * u[1];
+        agx += N * u[2];
+        agy += N * u[3];
+      }
+    }
+    double vx = cur_.vx[p] + dt_ * agx, vy = cur_.vy[p] + dt_ * agy;
+    if (pic_ > 0.0) {
+      vx = (1.0 - pic_) * vx + pic_ * vgx;
+      vy = (1.0 - pic_) * vy + pic_ * vgy;
+    }
+    const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
+    nxt_.vx[k] = vx;
+    nxt_.vy[k] = vy;
+    nxt_.x[k] = x;
+    nxt_.y[k] = y;
+    nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;
+    nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
+    const double speed = std::sqrt(vx * vx + vy * vy);
+    if (!std::isfinite(speed) || !std::isfinite(x) || !std::isfinite(y)) {
+      report(t, k, 1, cur_.id[p], vx, vy);
+    } else if (speed * dt_ > h) {
+      report(t, k, 2, cur_.id[p], speed, h / dt_);
+    }
+    if (x < grid_.xmin || x > grid_.xmax || y < grid_.ymin || y > grid_.ymax || !std::isfinite(x) ||
+        !std::isfinite(y)) {
+      nxt_.key[k] = kRemoved;
+      if (locate_) report(t, k, 3, cur_.id[p], x, y);
+    } else {
+      nxt_.key[k] = cell_key(x, y);
+    }
+  }
+}
+
+namespace {
+/// Dispatch for a run where every particle has the same material: one instantiation per model.
+template <class Model>
+struct SameMaterial {
+  const Model& model;
+  void operator()(std::uint32_t /*material*/, double* s, const double* de, double* sv) const { model.update(s, de, sv); }
+};
+/// Dispatch for mixed materials: a switch on the material type (no virtual call).
+struct MixedMaterials {
+  const std::vector<Material>& materials;
+  void operator()(std::uint32_t material, double* s, const double* de, double* sv) const {
+    const Material& m = materials[material];
+    if (m.type == io::MaterialType::MohrCoulomb2D)
+      m.mohr_coulomb.update(s, de, sv);
+    else
+      m.elastic.update(s, de, sv);
+  }
+};
+}  // namespace
+
+/// Strain increment from the grid velocity (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx)
+/// at the particle (CB-Geo compute_strain), the selected checkerboard remedy, the material's stress
+/// update, volume *= 1 + de_v (CB-Geo update_volume) and the strain sums. Writes the next buffer.
+template <class Shape>
+void Engine::update_stress(int t, const double* grid_velocity, int stride, bool from_next) {
+  const std::size_t k0 = chunk_[t], k1 = chunk_[t + 1];
+  if (uniform_material_ && !materials_.empty()) {
+    const Material& m = materials_[0];
+    if (m.type == io::MaterialType::MohrCoulomb2D)
+      stress_range<SameMaterial<MohrCoulomb>, Shape>(t, k0, k1, grid_velocity, stride, from_next,
+                                                     SameMaterial<MohrCoulomb>{m.mohr_coulomb});
+    else
+      stress_range<SameMaterial<LinearElastic>, Shape>(t, k0, k1, grid_velocity, stride, from_next,
+                                                       SameMaterial<LinearElastic>{m.elastic});
+  } else {
+    stress_range<MixedMaterials, Shape>(t, k0, k1, grid_velocity, stride, from_next, MixedMaterials{materials_});
+  }
+}
+
+template <class Dispatch, class Shape>
+void Engine::stress_range(int t, std::size_t k0, std::size_t k1, const double* gv, int stride, bool /*from_next*/,
+                          const Dispatch& dispatch) {
+  constexpr int W = Shape::kWidth;
+  const std::size_t st = static_cast<std::size_t>(stride);
+  // 1. Strain increments.
+  for (std::size_t k = k0; k < k1; ++k) {
+    const double* wk = &weights_[k * 4 * W];
+    const double* wx = wk;
+    const double* wy = wk + W;
+    const double* dwx = wk + 2 * W;
+    const double* dwy = wk + 3 * W;
+    double lxx = 0, lyy = 0, lxy = 0, lyx = 0;  // dvx/dx, dvy/dy, dvx/dy, dvy/dx
+    std::size_t node_row = static_cast<std::size_t>(base_[k]);
+    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+      const double* v = gv + st * node_row;
+      for (int a = 0; a < W; ++a, v += st) {
+        const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
+        lxx += dx * v[0];
+        lyy += dy * v[1];
+        lxy += dy * v[0];
+        lyx += dx * v[1];
+      }
+    }
+    double* de = &dstrain_[3 * k];
+    de[0] = dt_ * lxx;
+    de[1] = dt_ * lyy;
+    de[2] = dt_ * (lxy + lyx);
+  }
+  // 2. Checkerboard remedy: the cell's volume-weighted mean volumetric increment for all its particles.
+  if (smoothing_ == StressSmoothing::CellVolumetric) {
+    std::size_t a = k0;
+    while (a < k1) {
+      const std::int64_t key = cur_.key[order_[a]];
+      std::size_t b = a;
+      double vsum = 0.0, dvsum = 0.0;
+      while (b < k1 && cur_.key[order_[b]] == key) {
+        const double V = cur_.volume[order_[b]];
+        vsum += V;
+        dvsum += V * (dstrain_[3 * b] + dstrain_[3 * b + 1]);
+        ++b;
+      }
+      const double mean = dvsum / vsum;
+      for (std::size_t k = a; k < b; ++k) {
+        double* de = &dstrain_[3 * k];
+        const double shift = 0.5 * (mean - (de[0] + de[1]));
+        de[0] += shift;
+        de[1] += shift;
+      }
+      a = b;
+    }
+  }
+  // 3. Stress update and the per-particle state carried to the next buffer.
+  for (std::size_t k = k0; k < k1; ++k) {
+    const std::uint32_t p = order_[k];
+    const double* de = &dstrain_[3 * k];
+    double s[4] = {cur_.sxx[p], cur_.syy[p], cur_.szz[p], cur_.sxy[p]};
+    double sv[kStateVariables];
+    const double* sv_in = &cur_.svars[p * kStateVariables];
+    for (std::size_t i = 0; i < kStateVariables; ++i) sv[i] = sv_in[i];
+    dispatch(cur_.material[p], s, de, sv);
+    nxt_.sxx[k] = s[0];
+    nxt_.syy[k] = s[1];
+    nxt_.szz[k] = s[2];
+    nxt_.sxy[k] = s[3];
+    double* sv_out = &nxt_.svars[k * kStateVariables];
+    for (std::size_t i = 0; i < kStateVariables; ++i) sv_out[i] = sv[i];
+    const double dv = de[0] + de[1];
+    nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
+    nxt_.epsv[k] = cur_.epsv[p] + dv;
+    nxt_.exx[k] = cur_.exx[p] + de[0];
+    nxt_.eyy[k] = cur_.eyy[p] + de[1];
+    nxt_.gxy[k] = cur_.gxy[p] + de[2];
+    nxt_.id[k] = cur_.id[p];
+    nxt_.material[k] = cur_.material[p];
+    nxt_.mass[k] = cur_.mass[p];
+    nxt_.nsize_x[k] = cur_.nsize_x[p];
+    nxt_.nsize_y[k] = cur_.nsize_y[p];
+    nxt_.lx[k] = cur_.lx[p];
+    nxt_.ly[k] = cur_.ly[p];
+    if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(t, k, 4, cur_.id[p], s[0], s[1]);
+  }
+}
+
+void Engine::throw_first_error() const {
+  const Problem* first = nullptr;
+  for (const auto& p : problems_)
+    if (p.kind != 0 && (first == nullptr || p.k < first->k)) first = &p;
+  if (first == nullptr) return;
+  std::ostringstream os;
+  os.precision(10);
+  os << "step " << step_index_ << ": particle " << first->id;
+  switch (first->kind) {
+    case 1: os << " velocity is not finite (" << first->a << ", " << first->b << ")"; break;
+    case 2: os << " velocity runaway: speed " << first->a << " m/s exceeds one cell per step (" << first->b << " m/s)"; break;
+    case 3: os << " left the grid at (" << first->a << ", " << first->b << ")"; break;
+    default: os << " stress is not finite (sxx " << first->a << ", syy " << first->b << ")"; break;
+  }
+  throw common::NumericalError(os.str());
+}
+
+std::vector<io::ParticleRecord> Engine::snapshot() const {
+  std::vector<io::ParticleRecord> out;
+  out.reserve(order_.size());
+  for (std::uint32_t p : order_) {
+    io::ParticleRecord r{};
+    const Material& mat = materials_[cur_.material[p]];
+    r.id = cur_.id[p];
+    r.mass = cur_.mass[p];
+    r.volume = cur_.volume[p];
+    r.coord_x = cur_.x[p];
+    r.coord_y = cur_.y[p];
+    r.displacement_x = cur_.ux[p];
+    r.displacement_y = cur_.uy[p];
+    r.nsize_x = cur_.nsize_x[p];
+    r.nsize_y = cur_.nsize_y[p];
+    r.velocity_x = cur_.vx[p];
+    r.velocity_y = cur_.vy[p];
+    r.stress_xx = cur_.sxx[p];
+    r.stress_yy = cur_.syy[p];
+    r.stress_zz = cur_.szz[p];
+    r.tau_xy = cur_.sxy[p];
+    r.strain_xx = cur_.exx[p];
+    r.strain_yy = cur_.eyy[p];
+    r.gamma_xy = cur_.gxy[p];
+    r.epsilon_v = cur_.epsv[p];
+    r.cell_id = -1;
+    r.status = 1;
+    r.material_id = mat.id;
+    r.nstate_vars = static_cast<std::uint32_t>(mat.state_count);
+    for (std::size_t i = 0; i < mat.state_count; ++i) r.svars[i] = cur_.svars[p * kStateVariables + i];
+    out.push_back(r);
+  }
+  std::sort(out.begin(), out.end(), [](const io::ParticleRecord& a, const io::ParticleRecord& b) { return a.id < b.id; });
+  return out;
+}
+
+}  // namespace mpm::core

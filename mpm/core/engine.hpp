@@ -1,0 +1,136 @@
+#pragma once
+// The explicit MPM engine behind mpm::core::Simulation (see simulation.hpp for the algorithm).
+//
+// Data layout (STYLE.md "Performance habits"): particles as structure-of-arrays, double-buffered: a step
+// reads the current arrays through `order_` (the live particles sorted by cell, then id) and writes the
+// next arrays in that order; the buffers are swapped only when the whole step succeeded, so after a
+// NumericalError the engine still holds the last good state. Shape-function weights are computed once
+// per particle per step and stored. P2G scatters into one private grid buffer per thread (lock-free),
+// reduced in thread order over the active node box (deterministic at a fixed thread count). Thread
+// chunks of particles are cut at cell boundaries, so per-cell work (the checkerboard remedy) is local.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mpm/core/materials.hpp"
+#include "mpm/io/deck.hpp"
+#include "mpm/io/particle_table.hpp"
+
+namespace mpm::core {
+
+/// Checkerboard remedies selectable with analysis.stress_smoothing.
+enum class StressSmoothing {
+  None,
+  /// "cell_volumetric": every particle of a cell gets the cell's volume-weighted mean volumetric strain
+  /// increment (its deviatoric increment is kept): the cell-constant dilatation of the B-bar / F-bar
+  /// family (Hughes 1980; in MPM: Coombs, Charlton, Cortis & Augarde 2018, CMAME 333, sec. 3), which
+  /// removes the particle-to-particle pressure oscillation inside a cell.
+  CellVolumetric,
+};
+
+/// Parses analysis.stress_smoothing ("none" | "cell_volumetric"); throws common::InputError otherwise.
+StressSmoothing parse_stress_smoothing(const std::string& name);
+
+struct ParticleArrays {
+  std::vector<std::int64_t> id;
+  std::vector<std::uint32_t> material;  ///< index into Engine::materials_
+  std::vector<double> mass, volume, nsize_x, nsize_y;
+  std::vector<double> lx, ly;  ///< GIMP half-size in cell units (nsize / 4)
+  std::vector<double> x, y, ux, uy, vx, vy;
+  std::vector<double> sxx, syy, szz, sxy;
+  std::vector<double> exx, eyy, gxy, epsv;
+  std::vector<double> svars;          ///< kStateVariables per particle
+  std::vector<std::int64_t> key;      ///< lattice cell index (x fastest), or kRemoved
+  void resize(std::size_t n);
+};
+
+class Engine {
+ public:
+  Engine(const io::Deck& deck, int threads);
+  void step();
+  long long step_index() const { return step_index_; }
+  double dt() const { return dt_; }
+  double time() const { return static_cast<double>(step_index_) * dt_; }
+  std::size_t particle_count() const { return order_.size(); }
+  std::vector<io::ParticleRecord> snapshot() const;
+
+  static constexpr std::int64_t kRemoved = -1;
+
+ private:
+  // --- the phases of a step (called by every thread t inside one parallel region) ---
+  template <class Shape>
+  void p2g(int t, bool shape_functions, bool mass_momentum, bool forces);
+  void p2g_momentum_of_updated_velocity(int t);
+  void reduce_grid(int t, bool mass, bool momentum, bool forces);
+  void compute_nodal_velocity(int t);
+  void integrate_nodes(int t);
+  template <class Shape>
+  void g2p(int t);
+  template <class Shape>
+  void update_stress(int t, const double* grid_velocity, int stride, bool from_next);
+  template <class Shape>
+  void run_step(int t);
+
+  // --- serial parts ---
+  void sort_particles();  ///< order_ from cur_.key: by cell, then id; drops removed particles
+  void throw_first_error() const;
+  std::int64_t cell_key(double x, double y) const;
+  void apply_friction(std::size_t node, double& ax, double& ay, double vx, double vy) const;
+  template <class Dispatch, class Shape>
+  void stress_range(int t, std::size_t k0, std::size_t k1, const double* gv, int stride, bool from_next,
+                    const Dispatch& dispatch);
+
+  // grid
+  io::Grid grid_;
+  int nx_ = 0, ny_ = 0;          ///< nodes per axis
+  int cells_x_ = 0, cells_y_ = 0;
+  std::size_t nodes_ = 0;
+  int bi0_ = 0, bi1_ = 0, bj0_ = 0, bj1_ = 0;  ///< active node box [bi0, bi1) x [bj0, bj1)
+  std::vector<double> mass_;      ///< nodal mass
+  std::vector<double> momentum_;  ///< 2 per node
+  std::vector<double> force_;     ///< 2 per node (external + internal)
+  std::vector<double> velocity_;  ///< 2 per node: momentum / mass, velocity constraints applied
+  std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
+  std::vector<std::vector<double>> thread_grid_;  ///< per thread: 5 per node (m, px, py, fx, fy)
+  std::vector<std::uint8_t> fixed_;               ///< bit 0: x fixed, bit 1: y fixed
+  std::vector<double> fixed_velocity_;            ///< 2 per node
+  std::vector<std::int8_t> friction_dir_;         ///< -1: none
+  std::vector<std::int8_t> friction_sign_;
+  std::vector<double> friction_mu_;
+
+  // particles
+  ParticleArrays cur_, nxt_;
+  std::vector<std::uint32_t> order_;      ///< live particles (storage index in cur_), by cell then id
+  std::vector<std::int32_t> base_;        ///< per iteration index: stencil's first node
+  std::vector<double> weights_;           ///< per iteration index: wx, wy, dwx/h, dwy/h (4 * width)
+  std::vector<double> dstrain_;           ///< per iteration index: 3 (scratch for the stress update)
+  std::vector<std::size_t> chunk_;        ///< threads + 1 boundaries, at cell boundaries
+  std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
+  std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
+
+  // materials and analysis
+  std::vector<Material> materials_;
+  bool uniform_material_ = true;
+  io::Scheme scheme_ = io::Scheme::USF;
+  double pic_ = 0.0;  ///< PIC weight of the velocity update: 1 = PIC, 0 = FLIP
+  bool locate_ = true;
+  double damping_ = 0.0;
+  double gx_ = 0, gy_ = 0;
+  StressSmoothing smoothing_ = StressSmoothing::None;
+  double dt_ = 0;
+  long long step_index_ = 0;
+  int threads_ = 1;
+
+  /// The first problem a thread met in a step (by iteration index), reported after the step.
+  struct Problem {
+    std::size_t k = static_cast<std::size_t>(-1);
+    int kind = 0;  ///< 1 NaN velocity, 2 runaway velocity, 3 left the grid, 4 NaN stress
+    std::int64_t id = 0;
+    double a = 0, b = 0;
+  };
+  std::vector<Problem> problems_;
+  void report(int t, std::size_t k, int kind, std::int64_t id, double a, double b);
+};
+
+}  // namespace mpm::core

@@ -1,0 +1,91 @@
+#include "mpm/core/materials.hpp"
+
+#include <cmath>
+
+#include "constitutive/mohr_coulomb.hpp"
+#include "constitutive/stress_invariants.hpp"
+
+namespace mpm::core {
+
+namespace {
+double bulk_modulus(const io::MaterialSpec& s) { return s.youngs_modulus / (3.0 * (1.0 - 2.0 * s.poisson_ratio)); }
+double shear_modulus(const io::MaterialSpec& s) { return s.youngs_modulus / (2.0 * (1.0 + s.poisson_ratio)); }
+}  // namespace
+
+LinearElastic LinearElastic::from(const io::MaterialSpec& spec) { return {bulk_modulus(spec), shear_modulus(spec)}; }
+
+MohrCoulomb MohrCoulomb::from(const io::MaterialSpec& spec) {
+  MohrCoulomb m;
+  m.bulk = bulk_modulus(spec);
+  m.shear = shear_modulus(spec);
+  m.phi_peak = spec.friction;
+  m.psi_peak = spec.dilation;
+  m.c_peak = spec.cohesion;
+  m.phi_residual = spec.residual_friction;
+  m.psi_residual = spec.residual_dilation;
+  m.c_residual = spec.residual_cohesion;
+  m.pdstrain_peak = spec.peak_pdstrain;
+  m.pdstrain_residual = spec.residual_pdstrain;
+  m.tension_cutoff = spec.tension_cutoff;
+  m.softening = spec.softening;
+  return m;
+}
+
+void MohrCoulomb::initial_state(double* svars) const {
+  // CB-Geo initialise_state_variables: peak strength, zero invariants, zero pdstrain.
+  svars[0] = phi_peak;
+  svars[1] = psi_peak;
+  svars[2] = c_peak;
+  svars[3] = svars[4] = svars[5] = svars[6] = 0.0;
+}
+
+void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) const {
+  const double pdstrain = svars[6];
+  // Linear softening over pdstrain (CB-Geo mohr_coulomb.tcc, compute_stress, before the predictor).
+  if (softening && pdstrain > pdstrain_peak) {
+    if (pdstrain < pdstrain_residual) {
+      const double t = (pdstrain - pdstrain_residual) / (pdstrain_peak - pdstrain_residual);
+      svars[0] = phi_residual + (phi_peak - phi_residual) * t;
+      svars[1] = psi_residual + (psi_peak - psi_residual) * t;
+      svars[2] = c_residual + (c_peak - c_residual) * t;
+    } else {
+      svars[0] = phi_residual;
+      svars[1] = psi_residual;
+      svars[2] = c_residual;
+    }
+  }
+  const constitutive::PlaneStrainStress s(stress[0], stress[1], stress[2], stress[3]);
+  const constitutive::PlaneStrainStrain de(dstrain[0], dstrain[1], dstrain[2]);
+  const constitutive::MohrCoulombUpdate r = constitutive::mohr_coulomb_update(
+      s, de, constitutive::IsotropicElasticity{bulk, shear},
+      constitutive::MohrCoulombStrength{svars[0], svars[1], svars[2], tension_cutoff});
+  for (int i = 0; i < 4; ++i) stress[i] = r.stress[i];
+  svars[3] = constitutive::haigh_epsilon(r.stress);
+  svars[4] = constitutive::haigh_rho(r.stress);
+  svars[5] = constitutive::lode_angle(r.stress);
+  if (r.region != constitutive::ReturnRegion::Elastic) {
+    const Eigen::Vector4d& dp = r.plastic_strain_increment;
+    const double mean = (dp[0] + dp[1] + dp[2]) / 3.0;
+    const double d0 = dp[0] - mean, d1 = dp[1] - mean, d2 = dp[2] - mean, d3 = 0.5 * dp[3];
+    svars[6] = pdstrain + std::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * d3 * d3));
+  }
+}
+
+Material Material::from(const io::MaterialSpec& spec) {
+  Material m;
+  m.type = spec.type;
+  m.id = spec.id;
+  m.density = spec.density;
+  const double k = bulk_modulus(spec), g = shear_modulus(spec);
+  m.p_wave_modulus = k + 4.0 / 3.0 * g;
+  if (spec.type == io::MaterialType::LinearElastic2D) {
+    m.elastic = LinearElastic::from(spec);
+    m.state_count = LinearElastic::kStateCount;
+  } else {
+    m.mohr_coulomb = MohrCoulomb::from(spec);
+    m.state_count = MohrCoulomb::kStateCount;
+  }
+  return m;
+}
+
+}  // namespace mpm::core

@@ -1,0 +1,66 @@
+#pragma once
+// The particle materials of the engine, each a small value type with one stress-update function that
+// the engine calls from a loop templated on the material type (no virtual call per particle).
+// Stress (sxx, syy, szz, sxy), Pa, tension positive; strain increment (dexx, deyy, dgxy), engineering shear;
+// plane strain (dezz = 0). State variables in CB-Geo's order (FORMATS.md section 4).
+#include <array>
+#include <cstddef>
+
+#include "mpm/io/deck.hpp"
+
+namespace mpm::core {
+
+/// Number of state variables stored per particle (the largest count of any material: Mohr-Coulomb's 7).
+inline constexpr std::size_t kStateVariables = 7;
+
+/// Isotropic linear elasticity in plane strain, hypoelastic rate form (CB-Geo LinearElastic2D):
+/// dsigma = D : deps with D the isotropic stiffness, K bulk and G shear modulus,
+/// dsxx = (K + 4G/3) dexx + (K - 2G/3) deyy, dszz = (K - 2G/3)(dexx + deyy), dsxy = G dgxy.
+struct LinearElastic {
+  double bulk = 0, shear = 0;
+  static constexpr std::size_t kStateCount = 0;
+  static LinearElastic from(const io::MaterialSpec& spec);
+  void initial_state(double* /*svars*/) const {}
+  void update(double* stress, const double* dstrain, double* /*svars*/) const {
+    const double a1 = bulk + 4.0 / 3.0 * shear, a2 = bulk - 2.0 / 3.0 * shear;
+    stress[0] += a1 * dstrain[0] + a2 * dstrain[1];
+    stress[1] += a2 * dstrain[0] + a1 * dstrain[1];
+    stress[2] += a2 * (dstrain[0] + dstrain[1]);
+    stress[3] += shear * dstrain[2];
+  }
+};
+
+/// CB-Geo's MohrCoulomb2D (include/materials/mohr_coulomb.tcc): the plane-strain Mohr-Coulomb return of
+/// constitutive::mohr_coulomb_update (exact at face, edges and apex, with a Rankine tension cutoff), with
+/// CB-Geo's linear softening of friction, dilation and cohesion from peak to residual values between
+/// peak_pdstrain and residual_pdstrain, and CB-Geo's 7 state variables in its order:
+///   svars = [phi, psi, cohesion, epsilon = sqrt(3) p, rho = sqrt(2 J2), theta (Lode, [0, pi/3]), pdstrain].
+/// pdstrain accumulates the equivalent plastic deviatoric strain increment sqrt(2/3) |dev(deps_p)| (tensor
+/// norm; CB-Geo's lambda * dP/dq with q = sqrt(3 J2)). As in CB-Geo, the strength used in a step is the one
+/// reached at the start of the step (softening applied before the return).
+struct MohrCoulomb {
+  double bulk = 0, shear = 0;
+  double phi_peak = 0, psi_peak = 0, c_peak = 0;
+  double phi_residual = 0, psi_residual = 0, c_residual = 0;
+  double pdstrain_peak = 0, pdstrain_residual = 0;
+  double tension_cutoff = 0;
+  bool softening = false;
+  static constexpr std::size_t kStateCount = 7;
+  static MohrCoulomb from(const io::MaterialSpec& spec);
+  void initial_state(double* svars) const;
+  void update(double* stress, const double* dstrain, double* svars) const;
+};
+
+/// A material of the deck, resolved: its type, its spec id and its model parameters.
+struct Material {
+  io::MaterialType type = io::MaterialType::LinearElastic2D;
+  unsigned id = 0;
+  double density = 0;
+  double p_wave_modulus = 0;  ///< K + 4G/3, Pa (for the time-step limit)
+  std::size_t state_count = 0;
+  LinearElastic elastic;
+  MohrCoulomb mohr_coulomb;
+  static Material from(const io::MaterialSpec& spec);
+};
+
+}  // namespace mpm::core

@@ -1,0 +1,103 @@
+#pragma once
+// Small MPM decks built in code for the engine's unit and verification tests (no files needed).
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "mpm/core/simulation.hpp"
+#include "mpm/io/deck.hpp"
+
+namespace mpm_test {
+
+using mpm::io::CellType;
+using mpm::io::Deck;
+
+/// A uniform grid of cells_x x cells_y cells of size h with its lower-left corner at (x0, y0). GIMP
+/// grids get CB-Geo's halo ring: one extra node around the region on every side.
+inline mpm::io::Grid make_grid(double x0, double y0, double h, int cells_x, int cells_y, CellType type) {
+  mpm::io::Grid g;
+  const int halo = type == CellType::Gimp16 ? 1 : 0;
+  g.x0 = x0 - halo * h;
+  g.y0 = y0 - halo * h;
+  g.hx = g.hy = h;
+  g.nodes_x = cells_x + 1 + 2 * halo;
+  g.nodes_y = cells_y + 1 + 2 * halo;
+  g.cell_type = type;
+  g.xmin = x0;
+  g.xmax = x0 + cells_x * h;
+  g.ymin = y0;
+  g.ymax = y0 + cells_y * h;
+  return g;
+}
+
+inline mpm::io::MaterialSpec elastic(unsigned id, double rho, double E, double nu) {
+  mpm::io::MaterialSpec m;
+  m.id = id;
+  m.type = mpm::io::MaterialType::LinearElastic2D;
+  m.density = rho;
+  m.youngs_modulus = E;
+  m.poisson_ratio = nu;
+  return m;
+}
+
+inline mpm::io::MaterialSpec mohr_coulomb(unsigned id, double rho, double E, double nu, double phi_deg, double c,
+                                          double psi_deg) {
+  mpm::io::MaterialSpec m = elastic(id, rho, E, nu);
+  m.type = mpm::io::MaterialType::MohrCoulomb2D;
+  const double d2r = std::acos(-1.0) / 180.0;
+  m.friction = m.residual_friction = phi_deg * d2r;
+  m.dilation = m.residual_dilation = psi_deg * d2r;
+  m.cohesion = m.residual_cohesion = c;
+  m.tension_cutoff = 0.0;
+  return m;
+}
+
+/// Fills the rectangle [xa, xb] x [ya, yb] (whole cells) with ppd x ppd particles per cell at the cell's
+/// sub-cell centres, volume 0 (the engine applies CB-Geo's defaults). Returns the first id used.
+inline std::int64_t fill_block(Deck& deck, double xa, double xb, double ya, double yb, int ppd, unsigned material,
+                               std::int64_t first_id = -1) {
+  const double h = deck.grid.hx;
+  std::int64_t id = first_id >= 0 ? first_id : static_cast<std::int64_t>(deck.particles.size());
+  const std::int64_t start = id;
+  const int nx = static_cast<int>(std::lround((xb - xa) / h)) * ppd;
+  const int ny = static_cast<int>(std::lround((yb - ya) / h)) * ppd;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      mpm::io::ParticleRecord r{};
+      r.id = id++;
+      r.coord_x = xa + (i + 0.5) * h / ppd;
+      r.coord_y = ya + (j + 0.5) * h / ppd;
+      r.material_id = material;
+      deck.particles.push_back(r);
+    }
+  return start;
+}
+
+/// Lattice indices of the nodes whose coordinates satisfy `pred`.
+inline std::vector<int> nodes_where(const mpm::io::Grid& g, const std::function<bool(double, double)>& pred) {
+  std::vector<int> out;
+  for (int j = 0; j < g.nodes_y; ++j)
+    for (int i = 0; i < g.nodes_x; ++i)
+      if (pred(g.x0 + i * g.hx, g.y0 + j * g.hy)) out.push_back(i + j * g.nodes_x);
+  return out;
+}
+
+/// Sums over a snapshot.
+struct Totals {
+  double mass = 0, mx = 0, my = 0, px = 0, py = 0, kinetic = 0;
+};
+inline Totals totals(const std::vector<mpm::io::ParticleRecord>& ps) {
+  Totals t;
+  for (const auto& p : ps) {
+    t.mass += p.mass;
+    t.mx += p.mass * p.coord_x;
+    t.my += p.mass * p.coord_y;
+    t.px += p.mass * p.velocity_x;
+    t.py += p.mass * p.velocity_y;
+    t.kinetic += 0.5 * p.mass * (p.velocity_x * p.velocity_x + p.velocity_y * p.velocity_y);
+  }
+  return t;
+}
+
+}  // namespace mpm_test
