@@ -1,0 +1,346 @@
+// mpm::io::read_deck on small decks written by the test (one per error case: the message must name
+// the file / key and what was expected), and on the CB-Geo reference decks in
+// tests/data/reference_runs/cbgeo (written by make_decks.py; see that folder's README.md).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "common/input_error.hpp"
+#include "mpm/io/deck_reader.hpp"
+#include "support/tolerance.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+/// A scratch deck: a 4 m x 3 m grid of 1 m ED2Q4 cells (5 x 4 nodes), 4 particles in cell (1, 1),
+/// base nodes in node set 0, one LinearElastic2D material.
+class SmallDeck {
+ public:
+  explicit SmallDeck(const std::string& name) {
+    dir = fs::temp_directory_path() / ("geoflow_deck_reader_" + std::to_string(::getpid())) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream mesh(dir / "mesh.txt");
+    mesh << "# nodes and cells\n20 12\n";
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 5; ++i) mesh << i << " " << j << "\n";
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) {
+        const int n = i + 5 * j;
+        mesh << n << " " << n + 1 << " " << n + 6 << " " << n + 5 << "\n";
+      }
+    write("particles.txt", "4\n1.25 1.25\n1.75 1.25\n1.25 1.75\n1.75 1.75\n");
+    write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0, 1, 2, 3, 4]}]})");
+    deck = json::parse(R"({
+      "title": "small",
+      "mesh": {"mesh": "mesh.txt", "entity_sets": "entity_sets.json", "cell_type": "ED2Q4", "io_type": "Ascii2D",
+               "node_type": "N2D", "isoparametric": false, "check_duplicates": true,
+               "boundary_conditions": {"velocity_constraints": [{"nset_id": 0, "dir": 1, "velocity": 0.0}],
+                                       "friction_constraints": [{"nset_id": 0, "dir": 1, "sign_n": -1, "friction": 0.3}]}},
+      "particles": [{"generator": {"type": "file", "location": "particles.txt", "io_type": "Ascii2D", "pset_id": 0,
+                                   "particle_type": "P2D", "material_id": 0, "check_duplicates": false}}],
+      "materials": [{"id": 0, "type": "LinearElastic2D", "density": 1500.0, "youngs_modulus": 1e6, "poisson_ratio": 0.25}],
+      "external_loading_conditions": {"gravity": [0.0, -9.81]},
+      "analysis": {"type": "MPMExplicit2D", "mpm_scheme": "usl", "dt": 1e-3, "nsteps": 100, "uuid": "small",
+                   "velocity_update": false, "locate_particles": true,
+                   "damping": {"type": "Cundall", "damping_factor": 0.05},
+                   "resume": {"resume": false, "uuid": "small", "step": 0}},
+      "post_processing": {"path": "results/", "output_steps": 10}
+    })");
+  }
+  void write(const std::string& file, const std::string& text) const { std::ofstream(dir / file) << text; }
+  mpm::io::Deck read() const {
+    write("mpm.json", deck.dump(2));
+    return mpm::io::read_deck(dir, "mpm.json");
+  }
+  /// The InputError message of reading the deck ("" if it reads fine).
+  std::string error() const {
+    try {
+      read();
+    } catch (const common::InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  fs::path dir;
+  json deck;
+};
+
+#define EXPECT_MESSAGE_HAS(message, text) EXPECT_NE((message).find(text), std::string::npos) << "message: " << (message)
+
+const fs::path kCbgeo = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/cbgeo";
+
+}  // namespace
+
+TEST(DeckReader, ReadsTheSmallDeck) {
+  SmallDeck d("ok");
+  const auto deck = d.read();
+  EXPECT_EQ(deck.grid.nodes_x, 5);
+  EXPECT_EQ(deck.grid.nodes_y, 4);
+  EXPECT_CLOSE(deck.grid.hx, 1.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.xmax, 4.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.ymax, 3.0, 1e-12, 0);
+  ASSERT_EQ(deck.particles.size(), 4u);
+  EXPECT_EQ(deck.particles[3].id, 3);
+  EXPECT_EQ(deck.particles[3].coord_y, 1.75);
+  EXPECT_EQ(deck.particles[0].volume, 0.0);  // the engine applies CB-Geo's defaults
+  EXPECT_EQ(deck.analysis.scheme, mpm::io::Scheme::USL);
+  EXPECT_EQ(deck.analysis.cundall_damping, 0.05);
+  EXPECT_EQ(deck.analysis.gravity.y(), -9.81);
+  ASSERT_EQ(deck.velocity_constraints.size(), 1u);
+  EXPECT_EQ(deck.velocity_constraints[0].nodes, (std::vector<int>{0, 1, 2, 3, 4}));
+  ASSERT_EQ(deck.friction_constraints.size(), 1u);
+  EXPECT_EQ(deck.friction_constraints[0].sign_n, -1);
+  EXPECT_EQ(deck.friction_constraints[0].friction, 0.3);
+  EXPECT_EQ(deck.output.uuid, "small");
+  EXPECT_EQ(deck.output.output_steps, 10);
+  EXPECT_FALSE(deck.resumed);
+  EXPECT_EQ(deck.first_step, 0);
+}
+
+TEST(DeckReader, MapsFileNodeIdsToLatticeIndices) {
+  // The same mesh with the nodes listed in reverse order: file node n is lattice node 19 - n.
+  SmallDeck d("reversed");
+  std::ofstream mesh(d.dir / "mesh.txt");
+  mesh << "20 12\n";
+  for (int k = 19; k >= 0; --k) mesh << k % 5 << " " << k / 5 << "\n";
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const int n = i + 5 * j;
+      mesh << 19 - n << " " << 19 - (n + 1) << " " << 19 - (n + 6) << " " << 19 - (n + 5) << "\n";
+    }
+  mesh.close();
+  d.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [19, 18]}]})");
+  const auto deck = d.read();
+  EXPECT_EQ(deck.velocity_constraints[0].nodes, (std::vector<int>{0, 1}));
+}
+
+TEST(DeckReader, GaussGeneratorPlacesGaussPointsInTheCellSet) {
+  SmallDeck d("gauss");
+  d.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}], "cell_sets": [{"id": 3, "set": [5]}]})");
+  d.deck["particles"][0]["generator"] = json::parse(
+      R"({"type": "gauss", "nparticles_per_dir": 2, "cset_id": 3, "material_id": 0, "pset_id": 1, "particle_type": "P2D"})");
+  const auto deck = d.read();
+  ASSERT_EQ(deck.particles.size(), 4u);  // cell 5 is lattice cell (1, 1): x, y in [1, 2]
+  const double a = 0.5 / std::sqrt(3.0);
+  EXPECT_CLOSE(deck.particles[0].coord_x, 1.5 - a, 1e-12, 0);
+  EXPECT_CLOSE(deck.particles[0].coord_y, 1.5 - a, 1e-12, 0);
+  EXPECT_CLOSE(deck.particles[3].coord_x, 1.5 + a, 1e-12, 0);
+  EXPECT_CLOSE(deck.particles[3].coord_y, 1.5 + a, 1e-12, 0);
+}
+
+TEST(DeckReader, ParticleStressesVolumesAndMaterialSets) {
+  SmallDeck d("stresses");
+  d.write("stresses.txt", "4\n-1 -2 -3 4 0 0\n-1 -2 -3 4 0 0\n-1 -2 -3 4 0 0\n-10 -20 -30 40 0 0\n");
+  d.write("volumes.txt", "3 0.5\n");
+  d.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}], "particle_sets": [{"id": 7, "set": [3]}]})");
+  d.deck["mesh"]["particles_stresses"] = "stresses.txt";
+  d.deck["mesh"]["particles_volumes"] = "volumes.txt";
+  d.deck["mesh"]["update_materials"] = true;
+  d.deck["materials"].push_back(json::parse(
+      R"({"id": 2, "type": "MohrCoulomb2D", "density": 2000, "youngs_modulus": 1e7, "poisson_ratio": 0.3, "friction": 30,
+          "dilation": 0, "cohesion": 10, "residual_friction": 30, "residual_dilation": 0, "residual_cohesion": 10,
+          "peak_pdstrain": 0, "residual_pdstrain": 0, "tension_cutoff": 5, "softening": false})"));
+  d.deck["material_sets"] = json::parse(R"([{"material_id": 2, "pset_id": 7}])");
+  const auto deck = d.read();
+  EXPECT_EQ(deck.particles[3].stress_xx, -10);
+  EXPECT_EQ(deck.particles[3].stress_zz, -30);
+  EXPECT_EQ(deck.particles[3].tau_xy, 40);
+  EXPECT_EQ(deck.particles[3].volume, 0.5);
+  EXPECT_EQ(deck.particles[3].material_id, 2u);
+  EXPECT_EQ(deck.particles[3].mass, 2000 * 0.5);  // density of the material the set assigns
+  EXPECT_CLOSE(deck.particles[3].nsize_x, 1.0, 1e-15, 0);  // 2 / sqrt(4 particles in the cell)
+  EXPECT_EQ(deck.particles[0].material_id, 0u);
+  ASSERT_EQ(deck.materials.size(), 2u);
+  EXPECT_CLOSE(deck.materials[1].friction, M_PI / 6, 1e-15, 0);  // degrees -> radians
+}
+
+TEST(DeckReader, ReadsTheCbGeoGimpColumnDeck) {
+  const auto deck = mpm::io::read_deck(kCbgeo / "mc_column_gimp_short", "mpm.json");
+  EXPECT_EQ(deck.grid.cell_type, mpm::io::CellType::Gimp16);
+  EXPECT_EQ(deck.grid.nodes_x, 63);  // 60 cells + the halo ring
+  EXPECT_EQ(deck.grid.nodes_y, 23);
+  EXPECT_CLOSE(deck.grid.x0, -0.5, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.xmin, 0.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.xmax, 30.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.ymax, 10.0, 1e-12, 0);
+  EXPECT_EQ(deck.particles.size(), 1280u);
+  EXPECT_CLOSE(deck.particles[0].stress_yy, -139056.75, 1e-9, 0);
+  ASSERT_EQ(deck.materials.size(), 1u);
+  EXPECT_EQ(deck.materials[0].type, mpm::io::MaterialType::MohrCoulomb2D);
+  EXPECT_CLOSE(deck.materials[0].friction, M_PI / 6, 1e-15, 0);
+  EXPECT_EQ(deck.materials[0].tension_cutoff, 300.0);
+  EXPECT_EQ(deck.velocity_constraints.size(), 3u);
+  ASSERT_EQ(deck.friction_constraints.size(), 1u);
+  EXPECT_EQ(deck.friction_constraints[0].friction, 0.5);
+  EXPECT_EQ(deck.output.uuid, "mc_column");
+  EXPECT_EQ(deck.analysis.nsteps, 5001);
+}
+
+TEST(DeckReader, ResumeReadsTheHdf5StateAndStartsAfterItsStep) {
+  const auto deck = mpm::io::read_deck(kCbgeo / "resume_from_h5", "mpm.json");
+  EXPECT_TRUE(deck.resumed);
+  EXPECT_EQ(deck.first_step, 1);
+  EXPECT_EQ(deck.particles.size(), 288u);
+  EXPECT_GT(deck.particles[0].volume, 0.0);
+  EXPECT_EQ(deck.output.uuid, "bar_resume");
+}
+
+// ---- every malformed input: one InputError naming the file / key -------------------------------
+
+TEST(DeckReaderErrors, MissingInputFile) {
+  SmallDeck d("missing");
+  try {
+    mpm::io::read_deck(d.dir, "nope.json");
+    FAIL();
+  } catch (const common::InputError& e) {
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "nope.json");
+  }
+}
+
+TEST(DeckReaderErrors, TruncatedJson) {
+  SmallDeck d("truncated");
+  d.write("mpm.json", d.deck.dump(2).substr(0, 200));
+  try {
+    mpm::io::read_deck(d.dir, "mpm.json");
+    FAIL();
+  } catch (const common::InputError& e) {
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "mpm.json: invalid JSON");
+  }
+}
+
+TEST(DeckReaderErrors, UnknownKeysAreNamedWithTheirPath) {
+  SmallDeck d("unknown");
+  d.deck["analysis"]["newmark"] = true;
+  EXPECT_MESSAGE_HAS(d.error(), "mpm.json: analysis.newmark: unsupported key");
+  SmallDeck t("unknown_top");
+  t.deck["materiels"] = json::array();
+  EXPECT_MESSAGE_HAS(t.error(), "mpm.json: materiels: unsupported key");
+  SmallDeck m("unknown_material_key");
+  m.deck["materials"][0]["porosity"] = 0.3;
+  EXPECT_MESSAGE_HAS(m.error(), "materials[0].porosity: unsupported key");
+}
+
+TEST(DeckReaderErrors, UnknownSchemeIsNotSilentlyUsf) {
+  SmallDeck d("scheme");
+  d.deck["analysis"]["mpm_scheme"] = "usx";
+  EXPECT_MESSAGE_HAS(d.error(), "analysis.mpm_scheme: unknown scheme \"usx\"");
+}
+
+TEST(DeckReaderErrors, UndefinedMaterialId) {
+  SmallDeck d("material_id");
+  d.deck["particles"][0]["generator"]["material_id"] = 3;
+  EXPECT_MESSAGE_HAS(d.error(), "particles[0].generator.material_id: material 3 is not defined");
+}
+
+TEST(DeckReaderErrors, NegativeDensity) {
+  SmallDeck d("density");
+  d.deck["materials"][0]["density"] = -1500;
+  EXPECT_MESSAGE_HAS(d.error(), "materials[0].density: expected a number > 0");
+}
+
+TEST(DeckReaderErrors, MissingMohrCoulombParameter) {
+  SmallDeck d("mc_missing");
+  d.deck["materials"][0] = json::parse(
+      R"({"id": 0, "type": "MohrCoulomb2D", "density": 2000, "youngs_modulus": 1e7, "poisson_ratio": 0.3, "friction": 30,
+          "dilation": 0, "cohesion": 10, "residual_friction": 30, "residual_dilation": 0, "residual_cohesion": 10,
+          "peak_pdstrain": 0, "residual_pdstrain": 0, "softening": false})");
+  EXPECT_MESSAGE_HAS(d.error(), "materials[0].tension_cutoff: missing");
+}
+
+TEST(DeckReaderErrors, NonPositiveDtAndNsteps) {
+  SmallDeck d("dt");
+  d.deck["analysis"]["dt"] = 0.0;
+  EXPECT_MESSAGE_HAS(d.error(), "analysis.dt: expected a number > 0");
+  SmallDeck n("nsteps");
+  n.deck["analysis"]["nsteps"] = -5;
+  EXPECT_MESSAGE_HAS(n.error(), "analysis.nsteps: expected an integer > 0");
+}
+
+TEST(DeckReaderErrors, ParticleOutsideTheGrid) {
+  SmallDeck d("outside");
+  d.write("particles.txt", "2\n1.5 1.5\n4.5 1.0\n");
+  EXPECT_MESSAGE_HAS(d.error(), "particles.txt: particle 1 at (4.5, 1) is outside the grid");
+}
+
+TEST(DeckReaderErrors, TruncatedParticleFile) {
+  SmallDeck d("particles_truncated");
+  d.write("particles.txt", "4\n1.5 1.5\n1.6 1.5\n");
+  EXPECT_MESSAGE_HAS(d.error(), "particles.txt: header says 4 particles, found 2");
+  SmallDeck w("particles_word");
+  w.write("particles.txt", "2\n1.5 1.5\n1.6 abc\n");
+  EXPECT_MESSAGE_HAS(w.error(), "particles.txt:3: \"abc\" is not a finite number");
+}
+
+TEST(DeckReaderErrors, MissingResumeFileIsNotZeroParticles) {
+  SmallDeck d("resume");
+  d.deck["analysis"]["resume"] = json::parse(R"({"resume": true, "uuid": "small", "step": 20})");
+  EXPECT_MESSAGE_HAS(d.error(), "resume file results/small/particles020.h5 not found");
+}
+
+TEST(DeckReaderErrors, MissingMeshFile) {
+  SmallDeck d("mesh_missing");
+  d.deck["mesh"]["mesh"] = "other.txt";
+  EXPECT_MESSAGE_HAS(d.error(), "other.txt: file not found");
+}
+
+TEST(DeckReaderErrors, NodesOffALatticeAndCellsNotARectangle) {
+  SmallDeck d("lattice");
+  {
+    std::ofstream mesh(d.dir / "mesh.txt");
+    mesh << "4 1\n0 0\n1 0\n1.3 1\n0 1\n0 1 2 3\n";
+  }
+  d.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}]})");
+  d.write("particles.txt", "1\n0.5 0.5\n");
+  EXPECT_MESSAGE_HAS(d.error(), "mesh.txt: nodes do not form a uniform rectangular lattice");
+  SmallDeck r("rectangle");
+  {
+    std::ofstream mesh(r.dir / "mesh.txt");  // an L of 3 cells on a 3 x 3 lattice
+    mesh << "9 3\n";
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) mesh << i << " " << j << "\n";
+    mesh << "0 1 4 3\n1 2 5 4\n3 4 7 6\n";
+  }
+  r.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}]})");
+  r.write("particles.txt", "1\n0.5 0.5\n");
+  EXPECT_MESSAGE_HAS(r.error(), "mesh.txt: cells do not form a rectangle");
+  SmallDeck c("clockwise");
+  {
+    std::ofstream mesh(c.dir / "mesh.txt");
+    mesh << "4 1\n0 0\n1 0\n1 1\n0 1\n0 3 2 1\n";
+  }
+  c.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}]})");
+  c.write("particles.txt", "1\n0.5 0.5\n");
+  EXPECT_MESSAGE_HAS(c.error(), "mesh.txt: cell 0: node 1 (id 3) is not where");
+}
+
+TEST(DeckReaderErrors, UndefinedNodeSetAndMathFunctionsAndVtk) {
+  SmallDeck d("nset");
+  d.deck["mesh"]["boundary_conditions"]["velocity_constraints"][0]["nset_id"] = 9;
+  EXPECT_MESSAGE_HAS(d.error(), "velocity_constraints[0].nset_id: node set 9 is not defined");
+  SmallDeck m("math");
+  m.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Linear", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
+  EXPECT_MESSAGE_HAS(m.error(), "mpm.json: math_functions: unsupported");
+  SmallDeck v("vtk");
+  v.deck["post_processing"]["vtk"] = json::parse(R"(["stresses"])");
+  EXPECT_MESSAGE_HAS(v.error(), "post_processing.vtk: unsupported value");
+  SmallDeck e("vtk_empty");
+  e.deck["post_processing"]["vtk"] = json::array();
+  EXPECT_EQ(e.error(), "");
+}
+
+TEST(DeckReaderErrors, WrongTypesAreNamed) {
+  SmallDeck d("types");
+  d.deck["analysis"]["dt"] = "0.001";
+  EXPECT_MESSAGE_HAS(d.error(), "analysis.dt: expected a number, got the string \"0.001\"");
+  SmallDeck s("sets");
+  s.deck["material_sets"] = json::parse(R"([{"material_id": 0, "pset_id": 0}])");
+  EXPECT_MESSAGE_HAS(s.error(), "material_sets: given but mesh.update_materials is not true");
+}
