@@ -1,0 +1,282 @@
+#include "bridge/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "bridge/fem_model.hpp"
+#include "bridge/fem_state_reader.hpp"
+#include "bridge/mpm_deck.hpp"
+#include "bridge/particle_mapping.hpp"
+#include "bridge/transfer_report.hpp"
+#include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
+
+namespace bridge {
+namespace {
+
+struct CliOptions {
+  std::string model, disp, vel, stress, out;
+  std::optional<double> time;
+  std::optional<long> row;
+  std::string nodes, elements;
+  std::string units = "SI";
+  std::string material_type;
+  std::optional<double> E, nu, density, phi, cohesion, psi, tension, gravity;
+  int ppd = 4;
+  std::string recovery = "idw";
+  std::string volume_split = "jacobian";
+  std::string cell_type = "ED2Q16G";
+  std::string left_wall = "roller", right_wall = "roller", base = "friction";
+  std::vector<double> extent;
+  DeckOptions deck;
+  bool quiet = false;
+};
+
+Wall parse_wall(const std::string& s, const char* option) {
+  if (s == "roller") return Wall::Roller;
+  if (s == "fixed") return Wall::Fixed;
+  if (s == "none") return Wall::None;
+  throw common::InputError(option, "expected roller, fixed or none, got '" + s + "'");
+}
+
+std::string fmt(double v, int precision = 6) {
+  std::ostringstream os;
+  os << std::setprecision(precision) << v;
+  return os.str();
+}
+
+std::string relative_change(double before, double after) {
+  if (before == 0) return after == 0 ? "0" : "n/a";
+  return fmt((after - before) / std::abs(before), 3);
+}
+
+nlohmann::ordered_json totals_json(const TransferTotals& t) {
+  return {{"mass", t.mass},
+          {"momentum", {t.momentum.x(), t.momentum.y()}},
+          {"kinetic_energy", t.kinetic_energy},
+          {"potential_energy", t.potential_energy}};
+}
+
+void print_report(std::ostream& out, const AssembledState& a, const TransferReport& r, const DeckText& d,
+                  const CliOptions& o, const std::filesystem::path& outdir) {
+  out << "fem2mpm: FEM state at t = " << fmt(a.state.time, 9) << " s -> " << r.particle_count << " particles ("
+      << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd << "), stress recovery "
+      << (o.recovery == "spr" ? "SPR (Zienkiewicz-Zhu)" : "inverse-distance weighting") << "\n";
+  for (const auto& n : a.notes) out << "  note: " << n << "\n";
+  out << "                        FEM (lumped nodes)    particles        relative change\n";
+  auto row = [&](const char* name, double fem, double mpm, const char* unit) {
+    out << "  " << std::left << std::setw(20) << name << std::right << std::setw(16) << fmt(fem, 9) << "  "
+        << std::setw(16) << fmt(mpm, 9) << "  " << std::setw(10) << relative_change(fem, mpm) << "  " << unit << "\n";
+  };
+  row("mass", r.fem.mass, r.particles.mass, "kg/m");
+  row("momentum x", r.fem.momentum.x(), r.particles.momentum.x(), "kg m/s /m");
+  row("momentum y", r.fem.momentum.y(), r.particles.momentum.y(), "kg m/s /m");
+  row("kinetic energy", r.fem.kinetic_energy, r.particles.kinetic_energy, "J/m");
+  row("potential energy", r.fem.potential_energy, r.particles.potential_energy, "J/m (m g y)");
+  out << "  stress difference FEM Gauss points vs particle field: RMS " << fmt(100 * r.stress_rms_relative, 4)
+      << " %, max " << fmt(100 * r.stress_max_relative, 4) << " % of max |sigma| (" << fmt(r.stress_max_abs, 6)
+      << " Pa, element " << r.stress_max_element << ")\n";
+  out << "  min det J (current mesh): " << fmt(r.min_jacobian, 6) << " m2 (element " << r.min_jacobian_element << ")\n";
+  out << "  grid: " << d.grid.nx << " x " << d.grid.ny << " " << (d.grid.gimp ? "ED2Q16G" : "ED2Q4") << " cells of "
+      << fmt(d.grid.h) << " m from (" << fmt(d.grid.x0) << ", " << fmt(d.grid.y0) << "); dt " << fmt(d.dt)
+      << " s, nsteps " << d.nsteps << ", output every " << d.output_steps << " steps\n";
+  out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, particles.txt, "
+      << "report.json in " << outdir.string() << "\n";
+  out << "  run: mpm -f " << outdir.string() << "/ -i mpm.json\n";
+}
+
+int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
+  ReadOptions ro;
+  ro.disp = o.disp;
+  ro.vel = o.vel;
+  ro.stress = o.stress;
+  ro.time = o.time;
+  ro.row = o.row;
+  if (!o.nodes.empty()) ro.nodes = parse_tag_list(o.nodes, "--nodes");
+  if (!o.elements.empty()) ro.elements = parse_tag_list(o.elements, "--elements");
+  if (o.units == "SI") ro.units = Units::SI;
+  else if (o.units == "kN") ro.units = Units::kN;
+  else throw common::InputError("--units", "expected SI or kN, got '" + o.units + "'");
+  if (!o.material_type.empty()) ro.material.type = o.material_type;
+  ro.material.E = o.E;
+  ro.material.nu = o.nu;
+  ro.material.density = o.density;
+  ro.material.phi_deg = o.phi;
+  ro.material.cohesion = o.cohesion;
+  ro.material.psi_deg = o.psi;
+  ro.material.tension = o.tension;
+  ro.gravity = o.gravity;
+
+  MappingOptions mo;
+  if (o.ppd < 1 || o.ppd > 10) throw common::InputError("--ppd", "expected 1 to 10 particles per direction");
+  mo.particles_per_direction = o.ppd;
+  if (o.recovery == "idw") mo.recovery = Recovery::InverseDistance;
+  else if (o.recovery == "spr") mo.recovery = Recovery::PatchRecovery;
+  else throw common::InputError("--recovery", "expected idw or spr, got '" + o.recovery + "'");
+  if (o.volume_split == "jacobian") mo.volume_split = VolumeSplit::Jacobian;
+  else if (o.volume_split == "area") mo.volume_split = VolumeSplit::Area;
+  else throw common::InputError("--volume-split", "expected jacobian or area, got '" + o.volume_split + "'");
+
+  DeckOptions deck = o.deck;
+  if (o.cell_type == "ED2Q16G") deck.gimp = true;
+  else if (o.cell_type == "ED2Q4") deck.gimp = false;
+  else throw common::InputError("--cell-type", "expected ED2Q16G or ED2Q4, got '" + o.cell_type + "'");
+  deck.left = parse_wall(o.left_wall, "--left-wall");
+  deck.right = parse_wall(o.right_wall, "--right-wall");
+  if (o.base == "friction") deck.base = Base::Friction;
+  else if (o.base == "roller") deck.base = Base::Roller;
+  else if (o.base == "fixed") deck.base = Base::Fixed;
+  else throw common::InputError("--base", "expected friction, roller or fixed, got '" + o.base + "'");
+  if (!o.extent.empty()) deck.extent = std::array<double, 4>{o.extent[0], o.extent[1], o.extent[2], o.extent[3]};
+  if (deck.uuid.empty() || deck.uuid.find('/') != std::string::npos)
+    throw common::InputError("--uuid", "expected a plain name (no '/'), got '" + deck.uuid + "'");
+
+  // 1. Read and check everything (no output yet).
+  const FemModel model = read_fem_model(o.model);
+  AssembledState assembled = read_fem_state(model, ro);
+  for (const auto& w : assembled.warnings) err << "fem2mpm: warning: " << w << "\n";
+  const TransferState& state = assembled.state;
+  if (const auto bad = inverted_elements(state); !bad.empty()) {
+    std::string list;
+    for (std::size_t i = 0; i < bad.size() && i < 20; ++i) list += (i ? " " : "") + std::to_string(bad[i]);
+    if (bad.size() > 20) list += " ... (" + std::to_string(bad.size()) + " in all)";
+    throw common::InputError(o.disp, "at t = " + fmt(state.time, 9) + " the mesh has elements with non-positive Jacobian "
+                                         "(too distorted to transfer; choose an earlier --time): " + list);
+  }
+
+  // 2. Map.
+  const auto nodal = recover_nodal_stress(state, mo.recovery);
+  const auto particles = generate_particles(state, nodal, mo);
+  const TransferReport report = make_report(state, nodal, particles);
+  const DeckText d = build_deck(state, particles, deck);
+
+  // 3. Write: text files to temporary names, the HDF5 file (itself atomic), then rename the rest.
+  const std::filesystem::path outdir = o.out;
+  std::filesystem::create_directories(outdir / "results" / deck.uuid);
+  nlohmann::ordered_json rj;
+  rj["time"] = state.time;
+  rj["particles"] = report.particle_count;
+  rj["elements"] = state.elements.size();
+  rj["particles_per_direction"] = o.ppd;
+  rj["recovery"] = o.recovery;
+  rj["volume_split"] = o.volume_split;
+  rj["stress_components_read"] = assembled.stress_components;
+  rj["units"] = o.units;
+  rj["gravity"] = state.gravity;
+  rj["fem"] = totals_json(report.fem);
+  rj["particle_totals"] = totals_json(report.particles);
+  rj["stress_difference"] = {{"rms_relative", report.stress_rms_relative},
+                             {"max_relative", report.stress_max_relative},
+                             {"max_abs_pa", report.stress_max_abs},
+                             {"max_element", report.stress_max_element}};
+  rj["min_jacobian"] = {{"value", report.min_jacobian}, {"element", report.min_jacobian_element}};
+  rj["particle_file"] = d.particle_file;
+  rj["notes"] = assembled.notes;
+  rj["warnings"] = assembled.warnings;
+  std::vector<std::unique_ptr<common::AtomicTextFile>> files;
+  auto text = [&](const char* name, const std::string& body) {
+    files.push_back(std::make_unique<common::AtomicTextFile>(outdir / name));
+    files.back()->stream() << body;
+  };
+  text("mpm.json", d.mpm_json);
+  text("mesh.txt", d.mesh_txt);
+  text("entity_sets.json", d.entity_sets_json);
+  text("particles.txt", d.particles_txt);
+  text("report.json", rj.dump(2) + "\n");
+  mpm::io::write_particle_table(outdir / d.particle_file, particles);
+  for (auto& f : files) f->commit();
+  if (!o.quiet) print_report(out, assembled, report, d, o, outdir);
+  return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+  CliOptions o;
+  CLI::App app{
+      "fem2mpm: transfer an OpenSees / fem_tcl FEM state to CB-Geo MPM material points (the paper's hybrid FEM-MPM "
+      "transfer).\nReads the model (print -JSON), Node recorder files (disp, vel; with -time) and the Element stress "
+      "recorder; writes <out>/results/<uuid>/particles<step>.h5, mpm.json, mesh.txt, entity_sets.json, particles.txt "
+      "and report.json.\nExample: fem2mpm --model model.json --disp disp.out --vel vel.out --stress stress.out "
+      "--time 1.0 --units kN --out mpm_deck",
+      "fem2mpm"};
+  app.get_formatter()->column_width(34);
+  // Inputs.
+  app.add_option("--model", o.model, "model description written by `print -JSON -file f`")->required()->group("Inputs");
+  app.add_option("--disp", o.disp, "Node recorder file: -time ... -dof 1 2 disp")->required()->group("Inputs");
+  app.add_option("--vel", o.vel, "Node recorder file: -time ... -dof 1 2 vel (optional: without it the particles start at rest)")->group("Inputs");
+  app.add_option("--stress", o.stress,
+                 "Element recorder file: -time ... stress (3 values per Gauss point: szz = nu (sxx + syy) is derived) "
+                 "or stress3D (6 values: sxx syy szz sxy syz sxz); SSPquad 1 Gauss point, quad 4")->required()->group("Inputs");
+  auto* time_opt = app.add_option("--time", o.time, "transfer time: the row whose time equals it (to the printed precision); default: the last row")->group("Inputs");
+  app.add_option("--row", o.row, "use row N of the displacement file instead (1 first, -1 last)")->excludes(time_opt)->group("Inputs");
+  app.add_option("--nodes", o.nodes, "node order of the Node recorders, e.g. '1-35' or '1,2,5-9' (default: all nodes in tag order, as -nodeRange)")->group("Inputs");
+  app.add_option("--elements", o.elements, "element order of the Element recorder (default: all elements in tag order, as -eleRange)")->group("Inputs");
+  app.add_option("--units", o.units, "units of the FEM files: SI (N, m, Pa, kg/m3) or kN (kN, m, kPa, Mg/m3; stresses, moduli and densities x 1000)")
+      ->capture_default_str()->group("Inputs");
+  // Materials.
+  app.add_option("--material-type", o.material_type, "MPM material for every FEM material: elastic (LinearElastic2D) or mohr-coulomb (MohrCoulomb2D); default: from the model file")->group("Material (FEM units; override the model file)");
+  app.add_option("--E", o.E, "Young's modulus")->group("Material (FEM units; override the model file)");
+  app.add_option("--nu", o.nu, "Poisson's ratio")->group("Material (FEM units; override the model file)");
+  app.add_option("--density", o.density, "mass density")->group("Material (FEM units; override the model file)");
+  app.add_option("--phi", o.phi, "friction angle, degrees")->group("Material (FEM units; override the model file)");
+  app.add_option("--cohesion", o.cohesion, "cohesion")->group("Material (FEM units; override the model file)");
+  app.add_option("--psi", o.psi, "dilation angle, degrees (default 0)")->group("Material (FEM units; override the model file)");
+  app.add_option("--tension", o.tension, "tension cutoff (default: the Mohr-Coulomb apex, c cot(phi))")->group("Material (FEM units; override the model file)");
+  app.add_option("--gravity", o.gravity, "gravity, m/s2, acting in -y (default: from the elements' body forces / density, else 9.81)")->group("Material (FEM units; override the model file)");
+  // Mapping.
+  app.add_option("--ppd", o.ppd, "particles per direction per element, at the Gauss-Legendre points")->capture_default_str()->group("Mapping");
+  app.add_option("--recovery", o.recovery, "Gauss point -> node stress recovery: idw (inverse-distance weighting, the paper) or spr (superconvergent patch recovery, Zienkiewicz & Zhu 1992)")
+      ->capture_default_str()->group("Mapping");
+  app.add_option("--volume-split", o.volume_split, "particle volume: jacobian (det J x Gauss weight, current mesh) or area (element area x Gauss weight / 4)")
+      ->capture_default_str()->group("Mapping");
+  // Deck.
+  app.add_option("--out", o.out, "output folder (created); run the result with mpm -f <out>/ -i mpm.json")->required()->group("MPM deck");
+  app.add_option("--uuid", o.deck.uuid, "run name: the particle file goes to results/<uuid>/")->capture_default_str()->group("MPM deck");
+  app.add_option("--step", o.deck.step, "step number of the particle file (resume.step)")->capture_default_str()->group("MPM deck");
+  app.add_option("--cell-size", o.deck.cell_size, "background cell size, m (default: sqrt of the mean element area)")->group("MPM deck");
+  app.add_option("--extent", o.extent, "grid extent xmin xmax ymin ymax, m (default: the deformed model's bounding box, extended 3 widths to the right and 0.25 heights up)")
+      ->expected(4)->group("MPM deck");
+  app.add_option("--cell-type", o.cell_type, "ED2Q16G (GIMP, with CB-Geo's halo node ring) or ED2Q4")->capture_default_str()->group("MPM deck");
+  app.add_option("--left-wall", o.left_wall, "grid's left boundary: roller (x-velocity 0), fixed or none")->capture_default_str()->group("MPM deck");
+  app.add_option("--right-wall", o.right_wall, "grid's right boundary (the far end of the runout area): roller, fixed or none")->capture_default_str()->group("MPM deck");
+  app.add_option("--base", o.base, "grid's base: friction (y-velocity 0 + Coulomb friction), roller or fixed")->capture_default_str()->group("MPM deck");
+  app.add_option("--base-friction", o.deck.base_friction, "base friction coefficient mu (CB-Geo friction_constraints)")->capture_default_str()->group("MPM deck");
+  app.add_option("--dt", o.deck.dt, "MPM time step, s (default: --cfl x cell size / P-wave speed)")->group("MPM deck");
+  app.add_option("--cfl", o.deck.cfl, "Courant number for the default time step")->capture_default_str()->group("MPM deck");
+  app.add_option("--duration", o.deck.duration, "MPM time to run after the transfer, s (nsteps = duration / dt + 1)")->capture_default_str()->group("MPM deck");
+  app.add_option("--nsteps", o.deck.nsteps, "number of steps (overrides --duration)")->group("MPM deck");
+  app.add_option("--output-steps", o.deck.output_steps, "write particles every N steps (default: every 0.5 s)")->group("MPM deck");
+  app.add_option("--scheme", o.deck.scheme, "mpm_scheme: usf, usl or musl")->capture_default_str()->group("MPM deck");
+  app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC) instead of FLIP")->group("MPM deck");
+  app.add_option("--damping", o.deck.damping, "Cundall damping factor")->capture_default_str()->group("MPM deck");
+  app.add_flag("--quiet", o.quiet, "print nothing on success (the report is still written to report.json)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) {
+      out << app.help();
+      return 0;
+    }
+    err << "fem2mpm: error: " << e.what() << " (see fem2mpm --help)\n";
+    return 2;
+  }
+  try {
+    return run(o, out, err);
+  } catch (const common::InputError& e) {
+    err << "fem2mpm: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "fem2mpm: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace bridge

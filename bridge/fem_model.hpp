@@ -1,0 +1,68 @@
+#pragma once
+// The FEM model as OpenSees' `print -JSON` describes it (FORMATS.md section 3): nodes, four-node
+// elements (SSPquad, quad) and nD materials. OpenSees 3.8 writes invalid JSON for DruckerPrager and
+// the multi-yield materials (a bare word); the reader then takes nodes and elements line by line and
+// leaves the materials to command-line options.
+#include <Eigen/Core>
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bridge {
+
+enum class ElementKind { SSPquad /* 1 Gauss point */, Quad /* 4 Gauss points */ };
+
+/// Number of Gauss points OpenSees records for the element kind (SSPquad 1, quad 4).
+inline int gauss_point_count(ElementKind kind) { return kind == ElementKind::SSPquad ? 1 : 4; }
+
+struct FemNode {
+  long tag = 0;
+  Eigen::Vector2d crd = Eigen::Vector2d::Zero();  ///< reference coordinates, model units
+};
+
+struct FemElement {
+  long tag = 0;
+  ElementKind kind = ElementKind::SSPquad;
+  std::array<long, 4> node_tags{};   ///< as in the file
+  std::array<int, 4> nodes{};        ///< indices into FemModel::nodes
+  double thickness = 1;
+  std::string material;              ///< material name ("" when the element names none)
+  double mass_per_volume = 0;        ///< quad's `masspervolume` (replaces the material rho when > 0)
+  Eigen::Vector2d body_force = Eigen::Vector2d::Zero();  ///< force per unit volume (b1, b2)
+};
+
+/// What the bridge needs of an nD material; model units (stress, density) until converted.
+struct FemMaterial {
+  std::string name;
+  std::string type;                  ///< OpenSees type word ("ElasticIsotropicMaterial", "MohrCoulomb", ...)
+  std::optional<double> E, nu, rho;  ///< elastic constants and density when the JSON gives them
+  std::optional<double> phi_deg, cohesion, psi_deg, tension;  ///< MohrCoulomb only
+};
+
+struct FemModel {
+  std::filesystem::path source;
+  std::vector<FemNode> nodes;        ///< in file order
+  std::vector<FemElement> elements;  ///< in file order
+  std::map<std::string, FemMaterial> materials;
+  bool materials_readable = true;    ///< false when the JSON was invalid and only geometry was read
+
+  /// Index of the node with `tag`, or -1.
+  int node_index(long tag) const;
+  /// Index of the element with `tag`, or -1.
+  int element_index(long tag) const;
+
+  std::map<long, int> node_by_tag;
+  std::map<long, int> element_by_tag;
+};
+
+/// Reads `print -JSON` output. Throws common::InputError "<file>:<line>: <what>" for a missing
+/// file, an element type other than SSPquad/quad, an unknown node tag, or no nodes/elements.
+FemModel read_fem_model(const std::filesystem::path& file);
+
+/// Parses the JSON text (exposed for tests); `file` names it in errors.
+FemModel parse_fem_model(const std::string& text, const std::filesystem::path& file);
+
+}  // namespace bridge

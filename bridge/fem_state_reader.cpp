@@ -1,0 +1,301 @@
+#include "bridge/fem_state_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "bridge/recorder_file.hpp"
+#include "common/input_error.hpp"
+
+namespace bridge {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os.precision(9);
+  os << v;
+  return os.str();
+}
+
+std::string tag_range_text(const std::vector<long>& tags) {
+  if (tags.empty()) return "none";
+  if (tags.size() <= 6) {
+    std::string s;
+    for (std::size_t i = 0; i < tags.size(); ++i) s += (i ? " " : "") + std::to_string(tags[i]);
+    return s;
+  }
+  return std::to_string(tags.front()) + " .. " + std::to_string(tags.back()) + " (" + std::to_string(tags.size()) + ")";
+}
+
+/// The row to use in `file`: by time when the transfer time is known, else by row number.
+std::size_t pick_row(const RecorderFile& file, std::optional<double> time, std::optional<long> row,
+                     std::vector<std::string>& notes) {
+  if (time) {
+    std::vector<int> lines;
+    const std::size_t r = file.find_time(*time, &lines);
+    if (lines.size() > 1) {
+      std::string all;
+      for (int l : lines) all += (all.empty() ? "" : ", ") + std::to_string(l);
+      notes.push_back(file.path().string() + ": time " + fmt(*time) + " appears on lines " + all +
+                      " (the time restarts after loadConst -time); using the last, line " +
+                      std::to_string(file.rows()[r].line) + " (choose another with --row)");
+    }
+    return r;
+  }
+  if (row) return file.find_row(*row);
+  return file.rows().size() - 1;
+}
+
+MpmMaterial resolve_material(const FemModel& model, const std::string& name, const MaterialOverrides& o,
+                             double density_factor, double stress_factor) {
+  MpmMaterial m;
+  m.fem_name = name;
+  const auto it = model.materials.find(name);
+  const FemMaterial* fem = it == model.materials.end() ? nullptr : &it->second;
+  std::optional<double> E, nu, rho, phi, c, psi, tension;
+  std::string type;
+  if (fem) {
+    E = fem->E; nu = fem->nu; rho = fem->rho; phi = fem->phi_deg; c = fem->cohesion; psi = fem->psi_deg; tension = fem->tension;
+    if (fem->type == "ElasticIsotropicMaterial" || fem->type == "ElasticIsotropic") type = "elastic";
+    else if (fem->type == "MohrCoulomb") type = "mohr-coulomb";
+  }
+  if (o.type) type = *o.type;
+  if (o.E) E = o.E;
+  if (o.nu) nu = o.nu;
+  if (o.density) rho = o.density;
+  if (o.phi_deg) phi = o.phi_deg;
+  if (o.cohesion) c = o.cohesion;
+  if (o.psi_deg) psi = o.psi_deg;
+  if (o.tension) tension = o.tension;
+  const std::string src = model.source.string() + ": material '" + name + "'";
+  const std::string why = !model.materials_readable
+                              ? " (the file is not valid JSON, as OpenSees 3.8 writes it for DruckerPrager and multi-yield "
+                                "materials: give the material with --material-type, --E, --nu, --density, --phi, --cohesion)"
+                              : (fem ? " (type '" + fem->type + "' has no MPM counterpart: give --material-type and its parameters)"
+                                     : " (not in properties.ndMaterials: give --material-type and its parameters)");
+  if (type.empty()) throw common::InputError(src, "unknown material" + why);
+  if (type != "elastic" && type != "mohr-coulomb")
+    throw common::InputError("--material-type", "expected elastic or mohr-coulomb, got '" + type + "'");
+  auto need = [&](const std::optional<double>& v, const char* what, const char* option) {
+    if (!v) throw common::InputError(src, std::string("no ") + what + "; give " + option + why);
+    return *v;
+  };
+  m.youngs_modulus = need(E, "Young's modulus", "--E") * stress_factor;
+  m.poisson_ratio = need(nu, "Poisson's ratio", "--nu");
+  if (rho) m.density = *rho * density_factor;
+  if (!(m.youngs_modulus > 0)) throw common::InputError(src, "Young's modulus must be > 0");
+  if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5)) throw common::InputError(src, "Poisson's ratio must be in (-1, 0.5)");
+  if (type == "elastic") {
+    m.type = MpmMaterial::Type::LinearElastic2D;
+    return m;
+  }
+  m.type = MpmMaterial::Type::MohrCoulomb2D;
+  const double phi_deg = need(phi, "friction angle", "--phi");
+  if (!(phi_deg >= 0 && phi_deg < 90)) throw common::InputError(src, "friction angle must be in [0, 90) degrees");
+  m.friction = phi_deg * std::numbers::pi / 180;
+  m.dilation = psi.value_or(0.0) * std::numbers::pi / 180;
+  m.cohesion = need(c, "cohesion", "--cohesion") * stress_factor;
+  if (m.cohesion < 0) throw common::InputError(src, "cohesion must be >= 0");
+  // No tension cutoff in the FEM material: CB-Geo's cutoff at the Mohr-Coulomb apex c cot(phi).
+  if (tension) m.tension_cutoff = *tension * stress_factor;
+  else m.tension_cutoff = m.friction > 0 ? m.cohesion / std::tan(m.friction) : 1e30;
+  return m;
+}
+
+}  // namespace
+
+std::vector<long> parse_tag_list(const std::string& text, const std::string& option) {
+  std::vector<long> out;
+  std::string s = text;
+  std::replace(s.begin(), s.end(), ',', ' ');
+  std::istringstream in(s);
+  std::string word;
+  while (in >> word) {
+    const auto dash = word.find('-', 1);
+    try {
+      std::size_t used = 0;
+      if (dash == std::string::npos) {
+        out.push_back(std::stol(word, &used));
+        if (used != word.size()) throw std::invalid_argument(word);
+      } else {
+        const long a = std::stol(word.substr(0, dash), &used);
+        if (used != dash) throw std::invalid_argument(word);
+        const std::string rest = word.substr(dash + 1);
+        const long b = std::stol(rest, &used);
+        if (used != rest.size() || b < a) throw std::invalid_argument(word);
+        for (long t = a; t <= b; ++t) out.push_back(t);
+      }
+    } catch (const std::exception&) {
+      throw common::InputError(option, "expected tags or ranges like '1-35,40', got '" + word + "'");
+    }
+  }
+  if (out.empty()) throw common::InputError(option, "empty tag list");
+  return out;
+}
+
+AssembledState read_fem_state(const FemModel& model, const ReadOptions& options) {
+  AssembledState out;
+  TransferState& st = out.state;
+  const double factor = options.units == Units::kN ? 1000.0 : 1.0;  // stress and density to SI
+
+  // --- recorder files and the row at the transfer time
+  const RecorderFile disp(options.disp);
+  const std::size_t disp_row = pick_row(disp, options.time, options.row, out.notes);
+  const double t = disp.rows()[disp_row].time;
+  st.time = t;
+  const RecorderFile stress(options.stress);
+  const std::size_t stress_row = pick_row(stress, t, std::nullopt, out.notes);
+
+  // --- node layout of the Node recorders
+  std::vector<long> node_tags;
+  if (options.nodes) node_tags = *options.nodes;
+  else for (const auto& [tag, idx] : model.node_by_tag) node_tags.push_back(tag);
+  for (long tag : node_tags)
+    if (model.node_index(tag) < 0) throw common::InputError("--nodes", "node " + std::to_string(tag) + " is not in " + model.source.string());
+  auto check_node_width = [&](const RecorderFile& f, std::size_t row) {
+    const std::size_t w = f.data_width();
+    if (w == 2 * node_tags.size()) return;
+    std::string detected = w % 2 == 0 ? std::to_string(w / 2) + " nodes x 2 dofs" : "not a whole number of nodes x 2 dofs (record -dof 1 2)";
+    throw common::InputError(
+        f.where(row), std::to_string(w) + " values after the time column (" + detected + "), but the layout has " +
+                          std::to_string(node_tags.size()) + " nodes (" +
+                          (options.nodes ? "--nodes " + tag_range_text(node_tags)
+                                         : "all model nodes in tag order, " + tag_range_text(node_tags)) +
+                          ") x 2 dofs; give the recorder's node order with --nodes");
+  };
+  check_node_width(disp, disp_row);
+
+  const std::size_t nn = model.nodes.size();
+  st.reference.resize(nn);
+  st.displacement.assign(nn, Vec2::Zero());
+  st.velocity.assign(nn, Vec2::Zero());
+  for (std::size_t i = 0; i < nn; ++i) st.reference[i] = model.nodes[i].crd;
+  std::vector<char> recorded(nn, 0);
+  {
+    const auto u = disp.values(disp_row);
+    for (std::size_t k = 0; k < node_tags.size(); ++k) {
+      const auto i = static_cast<std::size_t>(model.node_index(node_tags[k]));
+      st.displacement[i] = Vec2(u[2 * k], u[2 * k + 1]);
+      recorded[i] = 1;
+    }
+  }
+  if (!options.vel.empty()) {
+    const RecorderFile vel(options.vel);
+    const std::size_t vel_row = pick_row(vel, t, std::nullopt, out.notes);
+    check_node_width(vel, vel_row);
+    const auto v = vel.values(vel_row);
+    for (std::size_t k = 0; k < node_tags.size(); ++k)
+      st.velocity[static_cast<std::size_t>(model.node_index(node_tags[k]))] = Vec2(v[2 * k], v[2 * k + 1]);
+  } else {
+    out.notes.push_back("no velocity file (--vel): the particles start at rest (zero velocity)");
+  }
+
+  // --- materials (ids in name order) and elements
+  std::map<std::string, unsigned> material_ids;
+  for (const auto& e : model.elements) material_ids.emplace(e.material, 0u);
+  unsigned next_id = 0;
+  for (auto& [name, id] : material_ids) {
+    id = next_id++;
+    MpmMaterial m = resolve_material(model, name, options.material, factor, factor);
+    m.id = id;
+    st.materials.push_back(m);
+  }
+  std::vector<long> element_tags;
+  if (options.elements) element_tags = *options.elements;
+  else for (const auto& [tag, idx] : model.element_by_tag) element_tags.push_back(tag);
+  std::vector<double> gravity_samples;
+  for (long tag : element_tags) {
+    const int idx = model.element_index(tag);
+    if (idx < 0) throw common::InputError("--elements", "element " + std::to_string(tag) + " is not in " + model.source.string());
+    const FemElement& fe = model.elements[static_cast<std::size_t>(idx)];
+    TransferElement e;
+    e.tag = fe.tag;
+    e.nodes = fe.nodes;
+    e.gauss_points = gauss_point_count(fe.kind);
+    e.material = material_ids.at(fe.material);
+    const MpmMaterial& mat = st.materials[e.material];
+    e.density = fe.mass_per_volume > 0 ? fe.mass_per_volume * factor : mat.density;
+    if (!(e.density > 0))
+      throw common::InputError(model.source.string() + ": element " + std::to_string(fe.tag),
+                               "no density (material '" + fe.material + "' has no rho and the element no masspervolume); give --density");
+    for (int a : fe.nodes)
+      if (!recorded[static_cast<std::size_t>(a)])
+        throw common::InputError(options.disp.string(), "no column for node " + std::to_string(model.nodes[static_cast<std::size_t>(a)].tag) +
+                                                            ", used by element " + std::to_string(fe.tag) + "; record all element nodes");
+    if (fe.body_force.norm() > 0) gravity_samples.push_back(fe.body_force.norm() * factor / e.density);
+    st.elements.push_back(e);
+  }
+  if (element_tags.size() != model.elements.size())
+    out.notes.push_back("only the " + std::to_string(element_tags.size()) + " recorded elements of " +
+                        std::to_string(model.elements.size()) + " become particles");
+  for (auto& m : st.materials)
+    if (!(m.density > 0)) {
+      // Material density only from the elements (quad masspervolume): their mean.
+      double sum = 0; int count = 0;
+      for (const auto& e : st.elements) if (e.material == m.id) { sum += e.density; ++count; }
+      m.density = count ? sum / count : 0;
+    }
+  st.index_gauss_points();
+
+  // --- stresses
+  const std::size_t gp_total = st.gauss_offset.back();
+  const std::size_t sw = stress.data_width();
+  int comps = 0;
+  for (int k : {3, 5, 6})
+    if (sw == gp_total * static_cast<std::size_t>(k)) comps = k;
+  if (comps == 0) {
+    throw common::InputError(
+        stress.where(stress_row),
+        std::to_string(sw) + " values after the time column, but the layout has " + std::to_string(element_tags.size()) +
+            " elements (" + (options.elements ? "--elements " + tag_range_text(element_tags) : "all model elements in tag order, " + tag_range_text(element_tags)) +
+            ") with " + std::to_string(gp_total) + " Gauss points: expected " + std::to_string(3 * gp_total) +
+            " (stress: sxx syy sxy), " + std::to_string(5 * gp_total) + " (multi-yield stress) or " + std::to_string(6 * gp_total) +
+            " (stress3D); give the recorder's element order with --elements");
+  }
+  out.stress_components = comps;
+  const auto sv = stress.values(stress_row);
+  st.gauss_stress.resize(gp_total);
+  for (std::size_t e = 0; e < st.elements.size(); ++e) {
+    const double nu = st.materials[st.elements[e].material].poisson_ratio;
+    for (std::size_t g = st.gauss_offset[e]; g < st.gauss_offset[e + 1]; ++g) {
+      const double* s = &sv[g * static_cast<std::size_t>(comps)];
+      Stress6& out6 = st.gauss_stress[g];
+      if (comps == 3) out6 = {s[0], s[1], nu * (s[0] + s[1]), s[2], 0, 0};
+      else if (comps == 5) out6 = {s[0], s[1], s[2], s[3], 0, 0};
+      else out6 = {s[0], s[1], s[2], s[3], s[4], s[5]};
+      for (double& c : out6) c *= factor;
+    }
+  }
+  if (comps == 3)
+    out.notes.push_back(stress.path().string() + ": 3 stress components per Gauss point (sxx syy sxy): szz derived as "
+                        "nu (sxx + syy), plane-strain elasticity (exact for elastic states, approximate after yield; "
+                        "record `stress3D` for the full tensor)");
+  if (comps == 5) out.notes.push_back(stress.path().string() + ": 5 values per Gauss point read as sxx syy szz sxy ratio (multi-yield `stress`)");
+
+  // --- gravity and unit sanity
+  if (options.gravity) {
+    st.gravity = *options.gravity;
+  } else if (!gravity_samples.empty()) {
+    double sum = 0;
+    for (double g : gravity_samples) sum += g;
+    st.gravity = sum / static_cast<double>(gravity_samples.size());
+    out.notes.push_back("gravity " + fmt(st.gravity) + " m/s2 from the elements' body forces / density (override with --gravity)");
+  } else {
+    st.gravity = 9.81;
+    out.notes.push_back("gravity 9.81 m/s2 (default; the elements carry no body force; override with --gravity)");
+  }
+  for (const auto& m : st.materials) {
+    const double rho_model = m.density / factor;
+    if (options.units == Units::SI && m.density < 100)
+      out.warnings.push_back("material '" + m.fem_name + "': density " + fmt(m.density) +
+                             " kg/m3 looks like Mg/m3; are the FEM files in kN, m, kPa (use --units kN)?");
+    if (options.units == Units::kN && rho_model > 100)
+      out.warnings.push_back("material '" + m.fem_name + "': density " + fmt(rho_model) +
+                             " Mg/m3 looks like kg/m3; are the FEM files in SI (use --units SI)?");
+  }
+  return out;
+}
+
+}  // namespace bridge

@@ -1,0 +1,52 @@
+#pragma once
+// Assembles the TransferState (SI units) from the model description and the recorder files at the
+// transfer time: recorder column layouts, the row for the time, stress components per Gauss point,
+// units, densities, materials and gravity. Everything the user may get wrong is checked here, before
+// any output is written.
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bridge/fem_model.hpp"
+#include "bridge/transfer_state.hpp"
+
+namespace bridge {
+
+/// Unit systems of the FEM files: SI (N, m, s, Pa, kg/m3) or kN (kN, m, s, kPa, Mg/m3: stresses,
+/// moduli and densities x 1000 to SI).
+enum class Units { SI, kN };
+
+/// Material data given on the command line; they complete or replace what the model file says
+/// (values in the FEM units; angles in degrees). They apply to every FEM material.
+struct MaterialOverrides {
+  std::optional<std::string> type;  ///< "elastic" or "mohr-coulomb"
+  std::optional<double> E, nu, density, phi_deg, cohesion, psi_deg, tension;
+};
+
+struct ReadOptions {
+  std::filesystem::path disp, vel, stress;  ///< vel may be empty (zero velocities)
+  std::optional<double> time;               ///< transfer time; neither time nor row: the last row
+  std::optional<long> row;                  ///< 1-based row (negative from the end)
+  std::optional<std::vector<long>> nodes;   ///< the Node recorders' node order (default: all, tag order)
+  std::optional<std::vector<long>> elements;///< the Element recorder's element order (default: all, tag order)
+  Units units = Units::SI;
+  MaterialOverrides material;
+  std::optional<double> gravity;            ///< m/s2; default from the body forces, else 9.81
+};
+
+struct AssembledState {
+  TransferState state;
+  int stress_components = 3;                ///< values per Gauss point in the stress file (3, 5 or 6)
+  std::vector<std::string> notes;           ///< what the user should know (derived szz, zero velocity, ...)
+  std::vector<std::string> warnings;        ///< suspicious input (units)
+};
+
+/// Throws common::InputError naming the file and line (or option) on any inconsistency.
+AssembledState read_fem_state(const FemModel& model, const ReadOptions& options);
+
+/// Parses a tag list "1-35,40 42" (commas or spaces, a-b ranges). Throws InputError naming `option`.
+std::vector<long> parse_tag_list(const std::string& text, const std::string& option);
+
+}  // namespace bridge

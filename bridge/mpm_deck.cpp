@@ -1,0 +1,240 @@
+#include "bridge/mpm_deck.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "common/input_error.hpp"
+
+namespace bridge {
+namespace {
+
+using nlohmann::ordered_json;
+
+/// Appends `v` in shortest round-trip form (fast, locale-free).
+void append_number(std::string& out, double v) {
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, res.ptr);
+}
+
+void append_integer(std::string& out, long v) {
+  char buf[24];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, res.ptr);
+}
+
+double p_wave_speed(const MpmMaterial& m) {
+  const double nu = m.poisson_ratio;
+  return std::sqrt(m.youngs_modulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * m.density));
+}
+
+ordered_json material_json(const MpmMaterial& m) {
+  ordered_json j;
+  j["id"] = m.id;
+  if (m.type == MpmMaterial::Type::LinearElastic2D) {
+    j["type"] = "LinearElastic2D";
+    j["density"] = m.density;
+    j["youngs_modulus"] = m.youngs_modulus;
+    j["poisson_ratio"] = m.poisson_ratio;
+    return j;
+  }
+  const double deg = 180 / std::numbers::pi;
+  j["type"] = "MohrCoulomb2D";
+  j["density"] = m.density;
+  j["youngs_modulus"] = m.youngs_modulus;
+  j["poisson_ratio"] = m.poisson_ratio;
+  j["friction"] = m.friction * deg;
+  j["dilation"] = m.dilation * deg;
+  j["cohesion"] = m.cohesion;
+  j["residual_friction"] = m.friction * deg;
+  j["residual_dilation"] = m.dilation * deg;
+  j["residual_cohesion"] = m.cohesion;
+  j["peak_pdstrain"] = 0.0;
+  j["residual_pdstrain"] = 0.0;
+  j["tension_cutoff"] = m.tension_cutoff;
+  j["softening"] = false;
+  return j;
+}
+
+}  // namespace
+
+GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                     const DeckOptions& options) {
+  GridSpec g;
+  g.gimp = options.gimp;
+  double area = 0;
+  for (const auto& e : state.elements) area += std::abs(quad_area(state.reference_nodes(e)));
+  g.h = options.cell_size ? *options.cell_size : std::sqrt(area / static_cast<double>(std::max<std::size_t>(1, state.elements.size())));
+  if (!(g.h > 0)) throw common::InputError("--cell-size", "expected a cell size > 0");
+  // Bounding box of the current nodes used by the elements.
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
+  for (const auto& e : state.elements)
+    for (int a : e.nodes) {
+      const Vec2 p = state.current(a);
+      xmin = std::min(xmin, p.x()); xmax = std::max(xmax, p.x());
+      ymin = std::min(ymin, p.y()); ymax = std::max(ymax, p.y());
+    }
+  std::array<double, 4> ext{xmin, xmax + 3 * (xmax - xmin), ymin, ymax + 0.25 * (ymax - ymin)};
+  if (options.extent) ext = *options.extent;
+  if (!(ext[1] > ext[0] && ext[3] > ext[2])) throw common::InputError("--extent", "expected xmin < xmax and ymin < ymax");
+  g.x0 = ext[0];
+  g.y0 = ext[2];
+  g.nx = static_cast<int>(std::ceil((ext[1] - ext[0]) / g.h - 1e-9));
+  g.ny = static_cast<int>(std::ceil((ext[3] - ext[2]) / g.h - 1e-9));
+  const double x1 = g.x0 + g.nx * g.h, y1 = g.y0 + g.ny * g.h;
+  for (const auto& p : particles)
+    if (p.coord_x < g.x0 || p.coord_x > x1 || p.coord_y < g.y0 || p.coord_y > y1)
+      throw common::InputError("--extent", "particle " + std::to_string(p.id) + " at (" + std::to_string(p.coord_x) + ", " +
+                                               std::to_string(p.coord_y) + ") lies outside the grid [" + std::to_string(g.x0) +
+                                               ", " + std::to_string(x1) + "] x [" + std::to_string(g.y0) + ", " +
+                                               std::to_string(y1) + "]");
+  return g;
+}
+
+DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                    const DeckOptions& options) {
+  DeckText d;
+  const GridSpec g = choose_grid(state, particles, options);
+  d.grid = g;
+  if (options.dt) {
+    if (!(*options.dt > 0)) throw common::InputError("--dt", "expected a time step > 0");
+    d.dt = *options.dt;
+  } else {
+    double cmax = 0;
+    for (const auto& m : state.materials) cmax = std::max(cmax, p_wave_speed(m));
+    if (!(options.cfl > 0)) throw common::InputError("--cfl", "expected a Courant number > 0");
+    d.dt = options.cfl * g.h / cmax;
+  }
+  if (options.nsteps) {
+    if (*options.nsteps < 1) throw common::InputError("--nsteps", "expected at least 1 step");
+    d.nsteps = *options.nsteps;
+  } else {
+    if (!(options.duration > 0)) throw common::InputError("--duration", "expected a duration > 0");
+    d.nsteps = static_cast<long long>(std::ceil(options.duration / d.dt - 1e-9)) + 1;
+  }
+  d.output_steps = options.output_steps ? *options.output_steps : std::max<long long>(1, std::llround(0.5 / d.dt));
+  if (d.output_steps < 1) throw common::InputError("--output-steps", "expected at least 1");
+  if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
+  if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
+    throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
+  d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
+
+  // mesh.txt: nnodes ncells, node coordinates, cells (CB-Geo Ascii2D).
+  const int hal = g.halo();
+  std::string& mesh = d.mesh_txt;
+  mesh.reserve(static_cast<std::size_t>(g.nodes_x()) * g.nodes_y() * 24 + static_cast<std::size_t>(g.nx) * g.ny * (g.gimp ? 100 : 30));
+  append_integer(mesh, static_cast<long>(g.nodes_x()) * g.nodes_y());
+  mesh += '\t';
+  append_integer(mesh, static_cast<long>(g.nx) * g.ny);
+  mesh += '\n';
+  for (int j = -hal; j <= g.ny + hal; ++j)
+    for (int i = -hal; i <= g.nx + hal; ++i) {
+      append_number(mesh, g.x0 + i * g.h);
+      mesh += '\t';
+      append_number(mesh, g.y0 + j * g.h);
+      mesh += '\n';
+    }
+  // ED2Q16G local order: corners (-1,-1) (1,-1) (1,1) (-1,1), then the ring counter-clockwise from
+  // (-3,-3) (FORMATS.md section 5); natural coordinate c -> lattice offset (c + 1) / 2.
+  static constexpr int kGimp[16][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-3, -3}, {-1, -3}, {1, -3}, {3, -3},
+                                       {3, -1},  {3, 1},  {3, 3}, {1, 3},  {-1, 3}, {-3, 3}, {-3, 1}, {-3, -1}};
+  static constexpr int kLinear[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (int cj = 0; cj < g.ny; ++cj)
+    for (int ci = 0; ci < g.nx; ++ci) {
+      const int count = g.gimp ? 16 : 4;
+      for (int k = 0; k < count; ++k) {
+        const int* nat = g.gimp ? kGimp[k] : kLinear[k];
+        if (k) mesh += '\t';
+        append_integer(mesh, g.node_id(ci + (nat[0] + 1) / 2, cj + (nat[1] + 1) / 2));
+      }
+      mesh += '\n';
+    }
+
+  // entity_sets.json: 0 left wall (x <= x0), 1 base (y <= y0), 2 right wall (x >= x0 + nx h), halo included.
+  ordered_json left = ordered_json::array(), base = ordered_json::array(), right = ordered_json::array();
+  for (int j = -hal; j <= g.ny + hal; ++j)
+    for (int i = -hal; i <= g.nx + hal; ++i) {
+      if (i <= 0) left.push_back(g.node_id(i, j));
+      if (j <= 0) base.push_back(g.node_id(i, j));
+      if (i >= g.nx) right.push_back(g.node_id(i, j));
+    }
+  ordered_json sets;
+  sets["node_sets"] = ordered_json::array({{{"id", 0}, {"set", left}}, {{"id", 1}, {"set", base}}, {{"id", 2}, {"set", right}}});
+  d.entity_sets_json = sets.dump(1) + "\n";
+
+  // Boundary conditions (CB-Geo velocity_constraints / friction_constraints).
+  ordered_json vel = ordered_json::array(), fric = ordered_json::array();
+  auto wall = [&](Wall w, int nset) {
+    if (w == Wall::None) return;
+    vel.push_back({{"nset_id", nset}, {"dir", 0}, {"velocity", 0.0}});
+    if (w == Wall::Fixed) vel.push_back({{"nset_id", nset}, {"dir", 1}, {"velocity", 0.0}});
+  };
+  wall(options.left, 0);
+  wall(options.right, 2);
+  vel.push_back({{"nset_id", 1}, {"dir", 1}, {"velocity", 0.0}});
+  if (options.base == Base::Fixed) vel.push_back({{"nset_id", 1}, {"dir", 0}, {"velocity", 0.0}});
+  if (options.base == Base::Friction) {
+    if (!(options.base_friction >= 0)) throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
+    fric.push_back({{"nset_id", 1}, {"dir", 1}, {"sign_n", -1}, {"friction", options.base_friction}});
+  }
+
+  ordered_json deck;
+  deck["title"] = "fem2mpm: FEM state at t = " + std::to_string(state.time) + " s transferred to material points";
+  ordered_json mesh_block;
+  mesh_block["mesh"] = "mesh.txt";
+  mesh_block["entity_sets"] = "entity_sets.json";
+  mesh_block["cell_type"] = g.gimp ? "ED2Q16G" : "ED2Q4";
+  mesh_block["isoparametric"] = false;
+  mesh_block["check_duplicates"] = false;
+  mesh_block["io_type"] = "Ascii2D";
+  mesh_block["node_type"] = "N2D";
+  ordered_json bc;
+  bc["velocity_constraints"] = vel;
+  if (!fric.empty()) bc["friction_constraints"] = fric;
+  mesh_block["boundary_conditions"] = bc;
+  deck["mesh"] = mesh_block;
+  deck["particles"] = ordered_json::array({{{"generator",
+                                             {{"check_duplicates", false},
+                                              {"location", "particles.txt"},
+                                              {"io_type", "Ascii2D"},
+                                              {"pset_id", 0},
+                                              {"particle_type", "P2D"},
+                                              {"material_id", state.materials.empty() ? 0u : state.materials.front().id},
+                                              {"type", "file"}}}}});
+  ordered_json mats = ordered_json::array();
+  for (const auto& m : state.materials) mats.push_back(material_json(m));
+  deck["materials"] = mats;
+  deck["external_loading_conditions"] = {{"gravity", {0.0, -state.gravity}}};
+  ordered_json analysis;
+  analysis["type"] = "MPMExplicit2D";
+  analysis["mpm_scheme"] = options.scheme;
+  analysis["dt"] = d.dt;
+  analysis["nsteps"] = d.nsteps;
+  analysis["uuid"] = options.uuid;
+  analysis["velocity_update"] = options.velocity_update;
+  analysis["locate_particles"] = true;
+  analysis["damping"] = {{"type", "Cundall"}, {"damping_factor", options.damping}};
+  analysis["resume"] = {{"resume", true}, {"uuid", options.uuid}, {"step", options.step}};
+  deck["analysis"] = analysis;
+  deck["post_processing"] = {{"path", "results/"}, {"output_steps", d.output_steps}};
+  d.mpm_json = deck.dump(2) + "\n";
+
+  // particles.txt: count, then coordinates (used only for a fresh start; resume reads the HDF5 file).
+  std::string& pt = d.particles_txt;
+  pt.reserve(particles.size() * 40 + 16);
+  append_integer(pt, static_cast<long>(particles.size()));
+  pt += '\n';
+  for (const auto& p : particles) {
+    append_number(pt, p.coord_x);
+    pt += '\t';
+    append_number(pt, p.coord_y);
+    pt += '\n';
+  }
+  return d;
+}
+
+}  // namespace bridge

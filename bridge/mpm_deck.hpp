@@ -1,0 +1,68 @@
+#pragma once
+// The MPM input deck for the transferred scene (FORMATS.md section 5, CB-Geo's schema): mpm.json with
+// a `resume` block pointing at the particle file, a uniform background grid (mesh.txt; ED2Q16G GIMP
+// cells with CB-Geo's halo ring of nodes, or ED2Q4), entity_sets.json (wall and base node sets),
+// velocity and friction constraints, and particles.txt (the particle positions, so that the deck is
+// complete also for a fresh start).
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bridge/transfer_state.hpp"
+#include "mpm/io/particle_table.hpp"
+
+namespace bridge {
+
+enum class Wall { None, Roller, Fixed };
+enum class Base { Friction, Roller, Fixed };
+
+struct DeckOptions {
+  std::string uuid = "column";
+  long long step = 0;                         ///< step number of the particle file (resume.step)
+  std::optional<double> cell_size;            ///< m; default sqrt(mean reference element area)
+  std::optional<std::array<double, 4>> extent;///< xmin xmax ymin ymax; default bounding box + 3 widths right, 0.25 height up
+  bool gimp = true;                           ///< ED2Q16G (true) or ED2Q4
+  Wall left = Wall::Roller, right = Wall::Roller;
+  Base base = Base::Friction;
+  double base_friction = 0.4;
+  std::optional<double> dt;                   ///< s; default cfl * h / c_p
+  double cfl = 0.1;
+  double duration = 10;                       ///< s of MPM time after the transfer
+  std::optional<long long> nsteps;            ///< overrides duration
+  std::optional<long long> output_steps;      ///< default: every 0.5 s
+  std::string scheme = "usf";
+  bool velocity_update = false;               ///< true: PIC, false: FLIP
+  double damping = 0;                         ///< Cundall damping factor
+};
+
+/// The background grid: cells cover [x0, x0 + nx h] x [y0, y0 + ny h]; GIMP adds one node ring.
+struct GridSpec {
+  double x0 = 0, y0 = 0, h = 1;
+  int nx = 0, ny = 0;
+  bool gimp = true;
+  int halo() const { return gimp ? 1 : 0; }
+  int nodes_x() const { return nx + 1 + 2 * halo(); }
+  int nodes_y() const { return ny + 1 + 2 * halo(); }
+  /// 0-based node id of lattice point (i, j), i in [-halo, nx + halo].
+  long node_id(int i, int j) const { return static_cast<long>(j + halo()) * nodes_x() + (i + halo()); }
+};
+
+struct DeckText {
+  GridSpec grid;
+  double dt = 0;
+  long long nsteps = 0, output_steps = 0;
+  std::string particle_file;                  ///< results/<uuid>/particles<step>.h5, relative to the deck
+  std::string mpm_json, mesh_txt, entity_sets_json, particles_txt;
+};
+
+/// Chooses the grid (throws common::InputError naming the option when a particle lies outside the
+/// requested extent or the sizes are not positive).
+GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                     const DeckOptions& options);
+
+/// Builds the text of every deck file.
+DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                    const DeckOptions& options);
+
+}  // namespace bridge

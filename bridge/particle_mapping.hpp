@@ -1,0 +1,40 @@
+#pragma once
+// Nodes -> material points (the paper, "Hybrid FEM-MPM", Figure 3b): n x n particles per element at
+// the Gauss-Legendre points, values from the element's bilinear shape functions.
+#include <vector>
+
+#include "bridge/stress_recovery.hpp"
+#include "bridge/transfer_state.hpp"
+#include "mpm/io/particle_table.hpp"
+
+namespace bridge {
+
+enum class VolumeSplit { Jacobian, Area };
+
+struct MappingOptions {
+  int particles_per_direction = 4;
+  Recovery recovery = Recovery::InverseDistance;
+  /// Jacobian: V_p = det J(xi_p) w_p (the element's own quadrature; sums to the area exactly).
+  /// Area: V_p = A w_p / 4 (the paper's "element area x Gauss weight").
+  VolumeSplit volume_split = VolumeSplit::Jacobian;
+};
+
+/// Tags of the elements whose Jacobian determinant is <= 0 somewhere in the current configuration
+/// (the minimum of the bilinear det J is at a corner).
+std::vector<long> inverted_elements(const TransferState& state);
+
+/// CB-Geo's Mohr-Coulomb state variables for `stress` (cb-geo/mpm include/materials/mohr_coulomb.tcc,
+/// compute_stress_invariants): phi, psi, cohesion, epsilon = sqrt(3) p (p = I1/3, tension positive),
+/// rho = sqrt(2 J2), theta = acos(3 sqrt(3) J3 / (2 J2^1.5)) / 3 in [0, pi/3] (0 when J2 = 0),
+/// pdstrain = 0. Returns the count (7).
+unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& stress, double* svars);
+
+/// Generates the particles: element by element, n x n Gauss-Legendre points in (xi, eta), eta-major
+/// (id = element_index * n^2 + j * n + i). Position, displacement, velocity and stress from the nodal
+/// values with N_a; volume from the current geometry, mass = density x reference volume (so the
+/// total mass equals sum density x reference area exactly); nsize = 2/n; cell_id -1; status 1.
+std::vector<mpm::io::ParticleRecord> generate_particles(const TransferState& state,
+                                                        const std::vector<Stress6>& nodal_stress,
+                                                        const MappingOptions& options);
+
+}  // namespace bridge

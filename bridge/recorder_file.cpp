@@ -1,0 +1,173 @@
+#include "bridge/recorder_file.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/input_error.hpp"
+
+namespace bridge {
+namespace {
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+/// Parses one number token [begin, end); false when it is not a whole number.
+bool parse_token(const char* begin, const char* end, double& value) {
+  if (begin != end && *begin == '+') ++begin;
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+/// Significant digits written in a number token ("0.000102767" -> 6, "0.2" -> 1, "-2.33e-20" -> 3).
+int significant_digits(const char* begin, const char* end) {
+  int digits = 0;
+  bool leading = true;
+  for (const char* p = begin; p != end; ++p) {
+    if (*p == 'e' || *p == 'E') break;
+    if (*p < '0' || *p > '9') continue;
+    if (leading && *p == '0') continue;
+    leading = false;
+    ++digits;
+  }
+  return std::max(digits, 1);
+}
+
+std::string format_time(double t) {
+  std::ostringstream os;
+  os.precision(9);
+  os << t;
+  return os.str();
+}
+
+}  // namespace
+
+RecorderFile::RecorderFile(std::filesystem::path file, bool has_time_column)
+    : path_(std::move(file)), has_time_(has_time_column) {
+  std::ifstream in(path_, std::ios::binary);
+  if (!in) throw common::InputError(path_.string(), "cannot open the recorder file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  text_ = buffer.str();
+
+  const char* data = text_.data();
+  const std::size_t size = text_.size();
+  std::size_t pos = 0;
+  int line = 0;
+  while (pos < size) {
+    ++line;
+    std::size_t eol = text_.find('\n', pos);
+    const bool terminated = eol != std::string::npos;
+    if (!terminated) eol = size;
+    Row row;
+    row.line = line;
+    row.offset = pos;
+    row.length = eol - pos;
+    // Count and check tokens; parse the first one as the time.
+    std::size_t i = pos;
+    int digits = 6;
+    while (i < eol) {
+      while (i < eol && is_space(data[i])) ++i;
+      if (i >= eol) break;
+      std::size_t j = i;
+      while (j < eol && !is_space(data[j])) ++j;
+      double v = 0;
+      if (!parse_token(data + i, data + j, v))
+        throw common::InputError(path_.string() + ":" + std::to_string(line),
+                                 "expected a number, got '" + std::string(data + i, data + j) + "'" +
+                                     (terminated ? "" : " (the file looks truncated)"));
+      if (row.width == 0) {
+        row.time = v;
+        digits = significant_digits(data + i, data + j);
+      }
+      ++row.width;
+      i = j;
+    }
+    pos = terminated ? eol + 1 : size;
+    if (row.width == 0) {
+      if (terminated && pos < size)
+        throw common::InputError(path_.string() + ":" + std::to_string(line), "empty line inside the recorder file");
+      continue;  // trailing blank line
+    }
+    if (!rows_.empty() && row.width != rows_.front().width) {
+      const bool last = pos >= size;
+      throw common::InputError(
+          path_.string() + ":" + std::to_string(line),
+          std::to_string(row.width) + " values in this row, but " + std::to_string(rows_.front().width) +
+              " in the first row" + (last ? " (the file is truncated: the last row is incomplete)" : ""));
+    }
+    rows_.push_back(row);
+    time_digits_.push_back(digits);
+  }
+  if (rows_.empty()) throw common::InputError(path_.string(), "the recorder file is empty (no committed step was recorded)");
+  if (has_time_ && rows_.front().width < 2)
+    throw common::InputError(path_.string() + ":1", "expected a time column and at least one value (recorder with -time)");
+}
+
+std::size_t RecorderFile::find_time(double t, std::vector<int>* ambiguous) const {
+  if (!has_time_) throw common::InputError(path_.string(), "--time needs recorder files written with -time; use --row");
+  std::optional<std::size_t> found;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const double tr = rows_[r].time;
+    const int digits = std::min(time_digits_[r] > 6 ? time_digits_[r] : 6, 17);
+    const double magnitude = std::max(std::abs(tr), std::abs(t));
+    const double tol = magnitude > 0 ? 0.5 * std::pow(10.0, std::floor(std::log10(magnitude)) - digits + 1) : 0;
+    if (std::abs(tr - t) <= tol * (1 + 1e-9) + 1e-300) {
+      if (ambiguous) ambiguous->push_back(rows_[r].line);
+      found = r;
+    }
+  }
+  if (found) return *found;
+  // Nearest times below and above, for the message.
+  std::optional<std::size_t> below, above;
+  for (std::size_t r = 0; r < rows_.size(); ++r) {
+    const double tr = rows_[r].time;
+    if (tr < t && (!below || tr > rows_[*below].time)) below = r;
+    if (tr > t && (!above || tr < rows_[*above].time)) above = r;
+  }
+  std::string nearest;
+  if (below) nearest += format_time(rows_[*below].time) + " (line " + std::to_string(rows_[*below].line) + ")";
+  if (above) nearest += std::string(nearest.empty() ? "" : ", ") + format_time(rows_[*above].time) + " (line " +
+                        std::to_string(rows_[*above].line) + ")";
+  throw common::InputError(path_.string(), "no row at time " + format_time(t) + "; nearest times: " + nearest + "; " +
+                                               std::to_string(rows_.size()) + " rows from t = " +
+                                               format_time(rows_.front().time) + " to " + format_time(rows_.back().time));
+}
+
+std::size_t RecorderFile::find_row(long n) const {
+  const long count = static_cast<long>(rows_.size());
+  const long index = n > 0 ? n - 1 : count + n;
+  if (n == 0 || index < 0 || index >= count)
+    throw common::InputError(path_.string(), "no row " + std::to_string(n) + " (the file has " + std::to_string(count) +
+                                                 " rows; 1 is the first, -1 the last)");
+  return static_cast<std::size_t>(index);
+}
+
+std::vector<double> RecorderFile::values(std::size_t index) const {
+  const Row& row = rows_.at(index);
+  std::vector<double> out;
+  out.reserve(row.width);
+  const char* data = text_.data();
+  std::size_t i = row.offset;
+  const std::size_t end = row.offset + row.length;
+  bool skip = has_time_;
+  while (i < end) {
+    while (i < end && is_space(data[i])) ++i;
+    if (i >= end) break;
+    std::size_t j = i;
+    while (j < end && !is_space(data[j])) ++j;
+    double v = 0;
+    parse_token(data + i, data + j, v);  // checked while indexing
+    if (!skip) out.push_back(v);
+    skip = false;
+    i = j;
+  }
+  return out;
+}
+
+std::string RecorderFile::where(std::size_t index) const {
+  return path_.string() + ":" + std::to_string(rows_.at(index).line);
+}
+
+}  // namespace bridge

@@ -1,0 +1,60 @@
+#pragma once
+// OpenSees Node / Element recorder text files (FORMATS.md section 2): no header, one row per committed
+// step, values separated by single spaces, optional leading time column (`-time`), 6 significant
+// digits unless `-precision n`. The file is indexed once (time, width and line of each row); a row's
+// values are parsed only when asked for.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bridge {
+
+class RecorderFile {
+ public:
+  struct Row {
+    int line = 0;              ///< 1-based line number in the file
+    std::size_t offset = 0;    ///< byte offset of the row's first character
+    std::size_t length = 0;    ///< bytes up to (not including) the newline
+    std::size_t width = 0;     ///< number of values including the time column
+    double time = 0;           ///< the first value when the file has a time column
+  };
+
+  /// Reads and indexes `file`. Throws common::InputError "<file>:<line>: ..." when the file is
+  /// missing or empty, a value is not a number, or rows differ in width (the last row being short
+  /// is reported as a truncated file).
+  explicit RecorderFile(std::filesystem::path file, bool has_time_column = true);
+
+  const std::filesystem::path& path() const { return path_; }
+  bool has_time_column() const { return has_time_; }
+  const std::vector<Row>& rows() const { return rows_; }
+  /// Values per row, time column included.
+  std::size_t width() const { return rows_.front().width; }
+  /// Values per row without the time column.
+  std::size_t data_width() const { return width() - (has_time_ ? 1 : 0); }
+
+  /// Index of the row whose time equals `t` within the printed precision (6 significant digits or
+  /// the row's own, whichever is coarser). When several rows match (e.g. after `loadConst -time 0`)
+  /// the last one is taken and `ambiguous` (if given) receives the lines of all matches. Throws
+  /// InputError listing the nearest times when no row matches.
+  std::size_t find_time(double t, std::vector<int>* ambiguous = nullptr) const;
+
+  /// Index of row `n` (1-based; negative counts from the end: -1 is the last row). Throws InputError.
+  std::size_t find_row(long n) const;
+
+  /// The values of row `index`, time column excluded.
+  std::vector<double> values(std::size_t index) const;
+
+  /// "<file>:<line>" of row `index`, for messages.
+  std::string where(std::size_t index) const;
+
+ private:
+  std::filesystem::path path_;
+  bool has_time_;
+  std::string text_;
+  std::vector<Row> rows_;
+  std::vector<int> time_digits_;  ///< significant digits printed in each row's time value
+};
+
+}  // namespace bridge

@@ -1,0 +1,54 @@
+#pragma once
+// The FEM state at the transfer time in SI units: what the readers assemble from the model file and
+// the recorder rows, and what the mapping (stress_recovery, particle_mapping) works on.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "bridge/quad_geometry.hpp"
+
+namespace bridge {
+
+/// Full stress tensor, Pa, tension positive: sxx syy szz sxy syz sxz.
+using Stress6 = std::array<double, 6>;
+
+/// What the MPM side needs of one material (SI units, angles in radians).
+struct MpmMaterial {
+  enum class Type { LinearElastic2D, MohrCoulomb2D };
+  unsigned id = 0;
+  std::string fem_name;     ///< the FEM material name it came from
+  Type type = Type::LinearElastic2D;
+  double density = 0;       ///< kg/m3
+  double youngs_modulus = 0, poisson_ratio = 0;  ///< Pa, -
+  double friction = 0, dilation = 0;             ///< rad
+  double cohesion = 0, tension_cutoff = 0;       ///< Pa
+};
+
+struct TransferElement {
+  long tag = 0;
+  std::array<int, 4> nodes{};   ///< indices into the node arrays, counter-clockwise
+  int gauss_points = 1;         ///< 1 (SSPquad, at the centre) or 4 (quad, OpenSees order)
+  double density = 0;           ///< kg/m3
+  unsigned material = 0;        ///< index into TransferState::materials
+};
+
+/// The FEM state at the transfer time (SI units).
+struct TransferState {
+  double time = 0;                        ///< FEM time of the row used
+  std::vector<Vec2> reference;            ///< node reference coordinates, m
+  std::vector<Vec2> displacement;         ///< m
+  std::vector<Vec2> velocity;             ///< m/s
+  std::vector<TransferElement> elements;
+  std::vector<std::size_t> gauss_offset;  ///< element e's Gauss points are [gauss_offset[e], gauss_offset[e+1])
+  std::vector<Stress6> gauss_stress;      ///< Pa
+  std::vector<MpmMaterial> materials;
+  double gravity = 9.81;                  ///< m/s2, acting in -y
+
+  Vec2 current(int node) const { return reference[static_cast<std::size_t>(node)] + displacement[static_cast<std::size_t>(node)]; }
+  QuadNodes current_nodes(const TransferElement& e) const;
+  QuadNodes reference_nodes(const TransferElement& e) const;
+  /// Fills gauss_offset from the elements' Gauss point counts.
+  void index_gauss_points();
+};
+
+}  // namespace bridge

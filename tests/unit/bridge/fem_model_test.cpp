@@ -1,0 +1,92 @@
+// Unit tests of the `print -JSON` reader on OpenSees 3.8's own output (reference_runs case 1.1) and on
+// the invalid JSON OpenSees writes for DruckerPrager.
+#include <gtest/gtest.h>
+
+#include "bridge/fem_model.hpp"
+#include "common/input_error.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+const std::filesystem::path kCase =
+    std::filesystem::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/sspquad_block_surface_load/ref";
+
+TEST(FemModel, ReadsOpenSeesPrintJson) {
+  const auto model = bridge::read_fem_model(kCase / "model.json");
+  ASSERT_EQ(model.nodes.size(), 35u);
+  ASSERT_EQ(model.elements.size(), 24u);
+  EXPECT_TRUE(model.materials_readable);
+  EXPECT_EQ(model.nodes[34].tag, 35);
+  EXPECT_CLOSE(model.nodes[34].crd.x(), 4.5, 0, 0);
+  EXPECT_CLOSE(model.nodes[34].crd.y(), 2.0, 0, 0);
+  const auto& e1 = model.elements[0];
+  EXPECT_EQ(e1.kind, bridge::ElementKind::SSPquad);
+  EXPECT_EQ(e1.node_tags, (std::array<long, 4>{1, 2, 9, 8}));
+  EXPECT_EQ(e1.nodes, (std::array<int, 4>{0, 1, 8, 7}));
+  EXPECT_EQ(e1.material, "3");
+  EXPECT_CLOSE(e1.thickness, 1.0, 0, 0);
+  const auto& m = model.materials.at("3");
+  EXPECT_EQ(m.type, "ElasticIsotropicMaterial");
+  EXPECT_CLOSE(*m.E, 50000.0, 0, 0);
+  EXPECT_CLOSE(*m.nu, 0.3, 0, 0);
+  EXPECT_CLOSE(*m.rho, 1.8, 0, 0);
+  EXPECT_EQ(model.element_index(24), 23);
+  EXPECT_EQ(model.node_index(99), -1);
+}
+
+// OpenSees 3.8 writes a bare word for DruckerPrager (FORMATS.md section 3): geometry is still read.
+TEST(FemModel, ToleratesOpenSeesInvalidJsonForPlasticMaterials) {
+  const std::string text = R"({
+"StructuralAnalysisModel": {
+	"properties": {
+		"ndMaterials": [
+			{"name": "1", "type": "DruckerPrager", "K": 53333.3, "mState": elastoplastic}
+		]
+	},
+	"geometry": {
+		"nodes": [
+			{"name": 1, "ndf": 2, "crd": [0, 0]},
+			{"name": 2, "ndf": 2, "crd": [1, 0]},
+			{"name": 3, "ndf": 2, "crd": [1, 1]},
+			{"name": 4, "ndf": 2, "crd": [0, 1]}
+		],
+		"elements": [
+			{"name": 7, "type": "FourNodeQuad", "nodes": [1, 2, 3, 4], "thickness": 1, "surfacePressure": 0, "masspervolume": 2, "bodyForces": [0, -19.62], "material": "1"}
+		]
+	}
+}
+})";
+  const auto model = bridge::parse_fem_model(text, "dp.json");
+  EXPECT_FALSE(model.materials_readable);
+  ASSERT_EQ(model.nodes.size(), 4u);
+  ASSERT_EQ(model.elements.size(), 1u);
+  EXPECT_EQ(model.elements[0].kind, bridge::ElementKind::Quad);
+  EXPECT_CLOSE(model.elements[0].mass_per_volume, 2.0, 0, 0);
+  EXPECT_CLOSE(model.elements[0].body_force.y(), -19.62, 0, 0);
+  EXPECT_TRUE(model.materials.empty());
+}
+
+TEST(FemModel, RejectsUnsupportedElementAndUnknownNode) {
+  const std::string bad_type = R"({"StructuralAnalysisModel": {"geometry": {
+    "nodes": [{"name": 1, "crd": [0, 0]}],
+    "elements": [{"name": 5, "type": "Tri31", "nodes": [1, 1, 1], "material": "1"}]}}})";
+  try {
+    bridge::parse_fem_model(bad_type, "m.json");
+    FAIL() << "expected an InputError";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Tri31"), std::string::npos) << e.what();
+  }
+  const std::string bad_node = R"({"StructuralAnalysisModel": {"geometry": {
+    "nodes": [{"name": 1, "crd": [0, 0]}],
+    "elements": [{"name": 5, "type": "SSPquad", "nodes": [1, 2, 3, 4], "material": "1"}]}}})";
+  try {
+    bridge::parse_fem_model(bad_node, "m.json");
+    FAIL() << "expected an InputError";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("node 2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(bridge::read_fem_model("/nonexistent/model.json"), common::InputError);
+}
+
+}  // namespace

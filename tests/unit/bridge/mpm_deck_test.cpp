@@ -1,0 +1,117 @@
+// The deck writer against CB-Geo's own layout: the reference deck mc_column_gimp_short (reference_runs
+// section 2.2, written by cbgeo/tools/make_decks.py and run by CB-Geo) has a 30 m x 10 m grid of 0.5 m
+// ED2Q16G cells with a halo ring; the same grid from fem2mpm must give the same node count, cell
+// connectivity and boundary node sets.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bridge/mpm_deck.hpp"
+#include "common/input_error.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+const std::filesystem::path kDeck = std::filesystem::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/cbgeo/mc_column_gimp_short";
+
+bridge::TransferState column_state() {
+  bridge::TransferState st;
+  st.reference = {{0, 0}, {10, 0}, {10, 8}, {0, 8}};
+  st.displacement.assign(4, bridge::Vec2::Zero());
+  st.velocity.assign(4, bridge::Vec2::Zero());
+  bridge::TransferElement e;
+  e.nodes = {0, 1, 2, 3};
+  e.density = 1800;
+  st.elements = {e};
+  bridge::MpmMaterial m;
+  m.type = bridge::MpmMaterial::Type::MohrCoulomb2D;
+  m.density = 1800;
+  m.youngs_modulus = 50e6;
+  m.poisson_ratio = 0.3;
+  m.friction = 30 * M_PI / 180;
+  m.cohesion = 500;
+  m.tension_cutoff = 300;
+  st.materials = {m};
+  st.index_gauss_points();
+  st.gauss_stress.assign(1, bridge::Stress6{});
+  return st;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+TEST(MpmDeck, GimpGridMatchesCbGeoReferenceDeck) {
+  bridge::DeckOptions o;
+  o.cell_size = 0.5;
+  o.extent = std::array<double, 4>{0, 30, 0, 10};
+  o.dt = 1e-4;
+  o.nsteps = 5001;
+  o.base_friction = 0.5;
+  const auto d = bridge::build_deck(column_state(), {}, o);
+  EXPECT_EQ(d.grid.nx, 60);
+  EXPECT_EQ(d.grid.ny, 20);
+  std::ifstream ref_mesh(kDeck / "mesh.txt");
+  std::string ref_text((std::istreambuf_iterator<char>(ref_mesh)), std::istreambuf_iterator<char>());
+  const auto ours = lines_of(d.mesh_txt), ref = lines_of(ref_text);
+  ASSERT_EQ(ours.size(), ref.size());
+  EXPECT_EQ(ours[0], ref[0]);  // "1449\t1200"
+  // Node coordinates equal as numbers; cells equal as text.
+  for (std::size_t i = 1; i <= 1449; ++i) {
+    double xa, ya, xb, yb;
+    std::istringstream(ours[i]) >> xa >> ya;
+    std::istringstream(ref[i]) >> xb >> yb;
+    ASSERT_CLOSE(xa, xb, 1e-12, 0);
+    ASSERT_CLOSE(ya, yb, 1e-12, 0);
+  }
+  for (std::size_t i = 1450; i < ref.size(); ++i) ASSERT_EQ(ours[i], ref[i]) << "mesh.txt line " << i + 1;
+  // Node sets 0 (left, x <= 0), 1 (base, y <= 0), 2 (right, x >= 30): as the reference.
+  const auto ours_sets = nlohmann::json::parse(d.entity_sets_json);
+  std::ifstream ref_sets_in(kDeck / "entity_sets.json");
+  const auto ref_sets = nlohmann::json::parse(ref_sets_in);
+  EXPECT_EQ(ours_sets["node_sets"], ref_sets["node_sets"]);
+  // mpm.json: the reference's boundary conditions and a resume block at step 0.
+  const auto deck = nlohmann::json::parse(d.mpm_json);
+  std::ifstream ref_json_in(kDeck / "mpm.json");
+  const auto ref_json = nlohmann::json::parse(ref_json_in);
+  EXPECT_EQ(deck["mesh"]["boundary_conditions"], ref_json["mesh"]["boundary_conditions"]);
+  EXPECT_EQ(deck["mesh"]["cell_type"], "ED2Q16G");
+  EXPECT_EQ(deck["analysis"]["resume"]["resume"], true);
+  EXPECT_EQ(deck["analysis"]["resume"]["uuid"], "column");
+  EXPECT_EQ(deck["analysis"]["resume"]["step"], 0);
+  EXPECT_EQ(deck["analysis"]["nsteps"], 5001);
+  EXPECT_EQ(d.particle_file, "results/column/particles0000.h5");  // 5001 steps -> 4 digits
+  EXPECT_EQ(deck["materials"][0]["type"], "MohrCoulomb2D");
+  EXPECT_CLOSE(deck["materials"][0]["friction"].get<double>(), 30.0, 1e-12, 0);
+  // Every key of our deck exists in the CB-Geo reference deck (same schema), except none.
+  for (const auto& [key, value] : deck.items()) EXPECT_TRUE(ref_json.contains(key)) << key;
+  for (const auto& [key, value] : deck["analysis"].items()) EXPECT_TRUE(ref_json["analysis"].contains(key)) << key;
+  for (const auto& [key, value] : deck["mesh"].items()) EXPECT_TRUE(ref_json["mesh"].contains(key)) << key;
+}
+
+TEST(MpmDeck, DefaultsAndErrors) {
+  const auto st = column_state();
+  bridge::DeckOptions o;
+  const auto d = bridge::build_deck(st, {}, o);
+  // Default extent: 10 m wide column + 3 widths, 8 m + 0.25 heights; cell = sqrt(area) = sqrt(80).
+  EXPECT_CLOSE(d.grid.h, std::sqrt(80.0), 1e-12, 1e-12);
+  EXPECT_GE(d.grid.x0 + d.grid.nx * d.grid.h, 40 - 1e-9);
+  EXPECT_GE(d.grid.y0 + d.grid.ny * d.grid.h, 10 - 1e-9);
+  // Default dt = 0.1 h / c_p.
+  const double nu = 0.3, cp = std::sqrt(50e6 * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * 1800));
+  EXPECT_CLOSE(d.dt, 0.1 * d.grid.h / cp, 0, 1e-12);
+  mpm::io::ParticleRecord outside{};
+  outside.coord_x = 50;
+  o.extent = std::array<double, 4>{0, 30, 0, 10};
+  EXPECT_THROW(bridge::build_deck(st, {outside}, o), common::InputError);
+  o = {};
+  o.scheme = "leapfrog";
+  EXPECT_THROW(bridge::build_deck(st, {}, o), common::InputError);
+}
+
+}  // namespace
