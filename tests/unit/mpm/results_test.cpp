@@ -1,0 +1,151 @@
+// mpm::io outputs: the series.csv statistics (definitions in mpm/io/results.hpp), the particle files
+// with their /xdmf datasets, particles.xdmf, and how a resumed run continues series.csv.
+#include <gtest/gtest.h>
+
+#include <hdf5.h>
+#include <hdf5_hl.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "mpm/io/results.hpp"
+#include "support/tolerance.hpp"
+
+namespace fs = std::filesystem;
+using mpm::io::ParticleRecord;
+
+namespace {
+
+std::vector<ParticleRecord> four_particles() {
+  // Four particles in lattice cell (1, 1) of a 1 m grid, mass 2, volume 0.001 (rho 2000).
+  std::vector<ParticleRecord> ps(4);
+  const double xy[4][2] = {{1.25, 1.25}, {1.75, 1.25}, {1.25, 1.75}, {1.75, 1.75}};
+  for (int k = 0; k < 4; ++k) {
+    ps[k].id = k;
+    ps[k].mass = 2.0;
+    ps[k].volume = 0.001;
+    ps[k].coord_x = xy[k][0];
+    ps[k].coord_y = xy[k][1];
+    ps[k].velocity_x = k;
+    ps[k].velocity_y = -1.0;
+  }
+  return ps;
+}
+
+mpm::io::Grid unit_grid() {
+  mpm::io::Grid g;
+  g.nodes_x = 5;
+  g.nodes_y = 4;
+  g.xmax = 4;
+  g.ymax = 3;
+  return g;
+}
+
+std::string slurp(const fs::path& f) {
+  std::ifstream in(f);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(Series, PercentileIsNumpysLinearInterpolation) {
+  std::vector<double> v;
+  for (int k = 10; k >= 1; --k) v.push_back(k);
+  // numpy.percentile(range(1, 11), 98) = 9.82, (.., 99.5) = 9.955, (.., 50) = 5.5
+  EXPECT_CLOSE(mpm::io::percentile(v, 98), 9.82, 1e-12, 0);
+  EXPECT_CLOSE(mpm::io::percentile(v, 99.5), 9.955, 1e-12, 0);
+  EXPECT_CLOSE(mpm::io::percentile(v, 50), 5.5, 1e-12, 0);
+  EXPECT_EQ(mpm::io::percentile({3.0}, 98), 3.0);
+}
+
+TEST(Series, EnergiesSpeedAndCounts) {
+  const auto ps = four_particles();
+  const auto row = mpm::io::summarize_state(7, 0.5, 1e-3, ps, unit_grid(), Eigen::Vector2d(0, -10));
+  EXPECT_EQ(row.step, 7);
+  EXPECT_EQ(row.particle_count, 4u);
+  EXPECT_CLOSE(row.potential_energy, 2 * 10 * (1.25 * 2 + 1.75 * 2), 1e-9, 0);
+  EXPECT_CLOSE(row.kinetic_energy_x, 0.5 * 2 * (0 + 1 + 4 + 9), 1e-12, 0);
+  EXPECT_CLOSE(row.kinetic_energy_y, 0.5 * 2 * 4, 1e-12, 0);
+  EXPECT_CLOSE(row.max_speed, std::sqrt(10.0), 1e-12, 0);
+  EXPECT_CLOSE(row.runout_x_p98, 1.75, 1e-12, 0);
+  EXPECT_EQ(row.checkerboard_index, 0.0);  // no shear stress at all
+}
+
+TEST(Series, CheckerboardIndexIsTheRmsDeviationFromTheCellMeanOverRhoGH) {
+  auto ps = four_particles();
+  const double t = 300.0;
+  for (int k = 0; k < 4; ++k) ps[k].tau_xy = 1000.0 + ((k == 0 || k == 3) ? t : -t);  // checkerboard around 1000 Pa
+  const auto row = mpm::io::summarize_state(0, 0, 1e-3, ps, unit_grid(), Eigen::Vector2d(0, -10));
+  const double height = mpm::io::percentile({1.25, 1.25, 1.75, 1.75}, 99.5) - 1.25;
+  EXPECT_CLOSE(row.checkerboard_index, t / (2000.0 * 10.0 * height), 1e-15, 1e-12);
+  // The same shear stress in every particle: a smooth field, index 0.
+  for (auto& p : ps) p.tau_xy = 1000.0;
+  EXPECT_EQ(mpm::io::summarize_state(0, 0, 1e-3, ps, unit_grid(), Eigen::Vector2d(0, -10)).checkerboard_index, 0.0);
+}
+
+TEST(Results, WritesParticleFilesXdmfAndSeries) {
+  mpm::io::Deck deck;
+  deck.working_dir = fs::temp_directory_path() / ("geoflow_results_" + std::to_string(::getpid()));
+  fs::remove_all(deck.working_dir);
+  deck.grid = unit_grid();
+  deck.analysis.nsteps = 101;
+  deck.analysis.gravity = Eigen::Vector2d(0, -9.81);
+  deck.output.path = "results/";
+  deck.output.uuid = "run";
+  deck.output.output_steps = 50;
+  mpm::io::ResultsWriter w(deck);
+  EXPECT_FALSE(fs::exists(w.folder()));  // nothing written before the first output
+  const auto ps = four_particles();
+  w.write_output(0, 0.001, 0.001, ps);
+  w.write_output(50, 0.051, 0.001, ps);
+  w.write_series_row(77, 0.078, 0.001, ps);
+  const fs::path folder = deck.working_dir / "results/run";
+  ASSERT_TRUE(fs::exists(folder / "particles000.h5"));
+  ASSERT_TRUE(fs::exists(folder / "particles050.h5"));
+  EXPECT_FALSE(fs::exists(folder / "particles077.h5"));
+  for (const auto& e : fs::directory_iterator(folder))
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
+
+  // The CB-Geo table reads back exactly; the /xdmf datasets hold the same numbers.
+  const auto back = mpm::io::read_particle_table(folder / "particles050.h5");
+  ASSERT_EQ(back.size(), 4u);
+  EXPECT_EQ(back[2].coord_y, 1.75);
+  const hid_t f = H5Fopen((folder / "particles050.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  std::vector<double> coords(12), vel(12);
+  EXPECT_GE(H5LTread_dataset_double(f, "/xdmf/coordinates", coords.data()), 0);
+  EXPECT_GE(H5LTread_dataset_double(f, "/xdmf/velocity", vel.data()), 0);
+  H5Fclose(f);
+  EXPECT_EQ(coords[3 * 2 + 1], 1.75);
+  EXPECT_EQ(vel[3 * 3], 3.0);
+
+  const std::string xdmf = slurp(folder / "particles.xdmf");
+  EXPECT_NE(xdmf.find("CollectionType=\"Temporal\""), std::string::npos);
+  EXPECT_NE(xdmf.find("particles000.h5:/xdmf/coordinates"), std::string::npos);
+  EXPECT_NE(xdmf.find("particles050.h5:/xdmf/coordinates"), std::string::npos);
+  EXPECT_NE(xdmf.find("<Time Value=\"0.051\"/>"), std::string::npos);
+  EXPECT_NE(xdmf.find("TopologyType=\"Polyvertex\" NumberOfElements=\"4\""), std::string::npos);
+
+  const std::string series = slurp(folder / "series.csv");
+  EXPECT_EQ(series.rfind(mpm::io::series_header() + "\n0,0.001,", 0), 0u) << series;
+  EXPECT_NE(series.find("\n50,0.051,"), std::string::npos);
+  EXPECT_NE(series.find("\n77,0.078,"), std::string::npos);
+
+  // A run resumed from step 50 keeps the rows up to 50 and continues from there.
+  deck.resumed = true;
+  deck.first_step = 51;
+  mpm::io::ResultsWriter resumed(deck);
+  resumed.write_output(100, 0.101, 0.001, ps);
+  const std::string continued = slurp(folder / "series.csv");
+  EXPECT_NE(continued.find("\n50,0.051,"), std::string::npos);
+  EXPECT_EQ(continued.find("\n77,"), std::string::npos);
+  EXPECT_NE(continued.find("\n100,0.101,"), std::string::npos);
+  const std::string xdmf2 = slurp(folder / "particles.xdmf");
+  EXPECT_NE(xdmf2.find("particles000.h5"), std::string::npos);
+  EXPECT_NE(xdmf2.find("particles100.h5"), std::string::npos);
+  fs::remove_all(deck.working_dir);
+}
