@@ -147,7 +147,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     std::string list;
     for (std::size_t i = 0; i < bad.size() && i < 20; ++i) list += (i ? " " : "") + std::to_string(bad[i]);
     if (bad.size() > 20) list += " ... (" + std::to_string(bad.size()) + " in all)";
-    throw common::InputError(o.disp, "at t = " + fmt(state.time, 9) + " the mesh has elements with non-positive Jacobian "
+    throw common::InputError(assembled.source_row, "at t = " + fmt(state.time, 9) + " the mesh has elements with non-positive Jacobian "
                                          "(too distorted to transfer; choose an earlier --time): " + list);
   }
 

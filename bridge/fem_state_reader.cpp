@@ -145,6 +145,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   const std::size_t disp_row = pick_row(disp, options.time, options.row, out.notes);
   const double t = disp.rows()[disp_row].time;
   st.time = t;
+  out.source_row = disp.where(disp_row);
   const RecorderFile stress(options.stress);
   const std::size_t stress_row = pick_row(stress, t, std::nullopt, out.notes);
 

@@ -38,6 +38,7 @@ struct ReadOptions {
 
 struct AssembledState {
   TransferState state;
+  std::string source_row;                   ///< "<disp file>:<line>" of the row used, for messages
   int stress_components = 3;                ///< values per Gauss point in the stress file (3, 5 or 6)
   std::vector<std::string> notes;           ///< what the user should know (derived szz, zero velocity, ...)
   std::vector<std::string> warnings;        ///< suspicious input (units)

@@ -1,0 +1,200 @@
+// fem2mpm through the binary on OpenSees 3.8 output (reference_runs/opensees/sspquad_block_surface_load:
+// 4.5 m x 2 m block, 6 x 4 SSPquads, rho = 1.8 Mg/m3, kN-m-kPa units; recorded by OpenSees itself).
+// Golden numbers: the total mass 1.8e3 kg/m3 x 4.5 m x 2 m = 16200 kg/m follows from model.tcl; every
+// particle field must equal, bit for bit, what the bridge library computes from the same files (the
+// HDF5 round trip through mpm::io::read_particle_table loses nothing). Bad inputs: exit code 2, a
+// one-line message naming file and line, and no output written.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <sys/wait.h>
+
+#include "bridge/fem_state_reader.hpp"
+#include "bridge/particle_mapping.hpp"
+#include "bridge/stress_recovery.hpp"
+#include "mpm/io/particle_table.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kCase = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/sspquad_block_surface_load/ref";
+const fs::path kBin = fs::path(GEOFLOW_BIN_DIR) / "fem2mpm";
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+fs::path scratch_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("bridge_regression_" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+Result run(const std::string& args, const fs::path& dir) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string cmd = kBin.string() + " " + args + " > " + out.string() + " 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  Result r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::string reference_args(const fs::path& out) {
+  return "--model " + (kCase / "model.json").string() + " --disp " + (kCase / "disp.out").string() + " --stress " +
+         (kCase / "stress.out").string() + " --units kN --out " + out.string();
+}
+
+TEST(Fem2mpmRegression, HdfRoundTripMatchesLibraryBitForBit) {
+  const fs::path dir = scratch_dir("roundtrip");
+  const fs::path out = dir / "deck";
+  // disp.out doubles as a velocity file (same layout), so that momentum and kinetic energy are not zero.
+  const Result r = run(reference_args(out) + " --vel " + (kCase / "disp.out").string() + " --time 0.8 --recovery spr", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("384 particles"), std::string::npos) << r.out;
+  const auto particles = mpm::io::read_particle_table(out / "results/column/particles00000.h5");
+  ASSERT_EQ(particles.size(), 384u);
+
+  // The same transfer through the library.
+  bridge::ReadOptions ro;
+  ro.disp = kCase / "disp.out";
+  ro.vel = kCase / "disp.out";
+  ro.stress = kCase / "stress.out";
+  ro.units = bridge::Units::kN;
+  ro.time = 0.8;
+  const auto state = bridge::read_fem_state(bridge::read_fem_model(kCase / "model.json"), ro).state;
+  const auto expected = bridge::generate_particles(state, bridge::recover_nodal_stress(state, bridge::Recovery::PatchRecovery), {});
+  double mass = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const auto& a = particles[i];
+    const auto& b = expected[i];
+    ASSERT_EQ(a.id, static_cast<std::int64_t>(i));
+    ASSERT_EQ(a.mass, b.mass);
+    ASSERT_EQ(a.volume, b.volume);
+    ASSERT_EQ(a.coord_x, b.coord_x);
+    ASSERT_EQ(a.coord_y, b.coord_y);
+    ASSERT_EQ(a.displacement_y, b.displacement_y);
+    ASSERT_EQ(a.velocity_x, b.velocity_x);
+    ASSERT_EQ(a.velocity_y, b.velocity_y);
+    ASSERT_EQ(a.stress_xx, b.stress_xx);
+    ASSERT_EQ(a.stress_yy, b.stress_yy);
+    ASSERT_EQ(a.stress_zz, b.stress_zz);
+    ASSERT_EQ(a.tau_xy, b.tau_xy);
+    ASSERT_EQ(a.nsize_x, 0.5);
+    ASSERT_EQ(a.nsize_y, 0.5);
+    ASSERT_EQ(a.cell_id, -1);
+    ASSERT_EQ(a.status, 1);
+    ASSERT_EQ(a.material_id, 0u);
+    ASSERT_EQ(a.nstate_vars, 0u);  // LinearElastic2D
+    mass += a.mass;
+  }
+  EXPECT_CLOSE(mass, 16200.0, 0, 1e-13);
+  // Deck files and report.
+  for (const char* f : {"mpm.json", "mesh.txt", "entity_sets.json", "particles.txt", "report.json"}) EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto report = nlohmann::json::parse(slurp(out / "report.json"));
+  EXPECT_CLOSE(report["fem"]["mass"].get<double>(), 16200.0, 0, 1e-13);
+  EXPECT_CLOSE(report["particle_totals"]["mass"].get<double>(), 16200.0, 0, 1e-13);
+  EXPECT_CLOSE(report["particle_totals"]["momentum"][0].get<double>(), report["fem"]["momentum"][0].get<double>(), 1e-15, 1e-12);
+  EXPECT_EQ(report["stress_components_read"], 3);
+  const auto deck = nlohmann::json::parse(slurp(out / "mpm.json"));
+  EXPECT_EQ(deck["analysis"]["resume"]["uuid"], "column");
+  // No temporary files left.
+  for (const auto& entry : fs::recursive_directory_iterator(out))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+TEST(Fem2mpmRegression, FullTensorAndMohrCoulombStateVariables) {
+  const fs::path dir = scratch_dir("stress3d");
+  // stress3D layout (sxx syy szz sxy syz sxz) built from stress.out with szz = -7 kPa everywhere.
+  std::ifstream in(kCase / "stress.out");
+  std::ofstream s3(dir / "stress3d.out");
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    double t;
+    words >> t;
+    s3 << t;
+    for (double a, b, c; words >> a >> b >> c;) s3 << ' ' << a << ' ' << b << " -7 " << c << " 0 0";
+    s3 << '\n';
+  }
+  s3.close();
+  const fs::path out = dir / "deck";
+  const Result r = run("--model " + (kCase / "model.json").string() + " --disp " + (kCase / "disp.out").string() +
+                           " --stress " + (dir / "stress3d.out").string() +
+                           " --units kN --material-type mohr-coulomb --phi 30 --cohesion 5 --psi 2 --ppd 2 --out " + out.string(),
+                       dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.find("szz derived"), std::string::npos) << r.out;
+  const auto particles = mpm::io::read_particle_table(out / "results/column/particles00000.h5");
+  ASSERT_EQ(particles.size(), 96u);
+  for (const auto& p : particles) {
+    ASSERT_CLOSE(p.stress_zz, -7000.0, 1e-9, 1e-12);  // constant field: exact
+    ASSERT_EQ(p.nstate_vars, 7u);
+    ASSERT_CLOSE(p.svars[0], 30 * M_PI / 180, 0, 1e-15);
+    ASSERT_CLOSE(p.svars[1], 2 * M_PI / 180, 0, 1e-15);
+    ASSERT_CLOSE(p.svars[2], 5000.0, 0, 1e-15);
+    ASSERT_CLOSE(p.svars[3], std::sqrt(3.0) * (p.stress_xx + p.stress_yy + p.stress_zz) / 3, 1e-9, 1e-12);
+    ASSERT_CLOSE(p.nsize_x, 1.0, 0, 0);
+  }
+  const auto deck = nlohmann::json::parse(slurp(out / "mpm.json"));
+  EXPECT_EQ(deck["materials"][0]["type"], "MohrCoulomb2D");
+  EXPECT_CLOSE(deck["materials"][0]["cohesion"].get<double>(), 5000.0, 0, 1e-15);
+}
+
+/// A bad input: exit 2, one line on stderr containing every `needles`, and no output at all.
+void expect_clean_failure(const std::string& args, const fs::path& dir, const std::vector<std::string>& needles) {
+  const fs::path out = dir / "deck";
+  const Result r = run(args + " --out " + out.string(), dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
+  EXPECT_FALSE(fs::exists(out)) << "output written despite the error";
+}
+
+TEST(Fem2mpmRegression, BadInputsFailCleanly) {
+  const fs::path dir = scratch_dir("errors");
+  const std::string model = " --units kN --model " + (kCase / "model.json").string();
+  const std::string disp = " --disp " + (kCase / "disp.out").string();
+  const std::string stress = " --stress " + (kCase / "stress.out").string();
+  // Missing recorder file.
+  expect_clean_failure(model + " --disp " + (dir / "nope.out").string() + stress, dir, {"nope.out", "cannot open"});
+  // Truncated stress file: the last row is cut mid-way.
+  const std::string text = slurp(kCase / "stress.out");
+  std::ofstream(dir / "cut.out") << text.substr(0, text.size() - 100);
+  expect_clean_failure(model + disp + " --stress " + (dir / "cut.out").string(), dir, {"cut.out:5", "truncated"});
+  // Row width disagreeing with the model layout.
+  expect_clean_failure(model + disp + stress + " --nodes 1-30", dir, {"disp.out:5", "35 nodes", "--nodes"});
+  // A time not in the file: the nearest times are listed.
+  expect_clean_failure(model + disp + stress + " --time 0.7", dir, {"disp.out", "0.6 (line 3)", "0.8 (line 4)"});
+  // A distorted mesh: node 17 (interior, x = 1.5, y = 1) moved past its neighbours -> elements named.
+  {
+    std::istringstream rows(slurp(kCase / "disp.out"));
+    std::ofstream bad(dir / "folded.out");
+    for (std::string line; std::getline(rows, line);) {
+      std::istringstream words(line);
+      std::vector<std::string> w;
+      for (std::string x; words >> x;) w.push_back(x);
+      w[1 + 2 * 16] = "2.0";  // ux of node 17 (index 16): 2 m to the right
+      for (std::size_t i = 0; i < w.size(); ++i) bad << (i ? " " : "") << w[i];
+      bad << '\n';
+    }
+  }
+  expect_clean_failure(model + " --disp " + (dir / "folded.out").string() + stress, dir,
+                       {"folded.out:5", "non-positive Jacobian", ": 9 15"});
+  // Unknown option value.
+  expect_clean_failure(model + disp + stress + " --recovery rbf", dir, {"--recovery", "rbf"});
+}
+
+}  // namespace
