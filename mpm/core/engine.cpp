@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "mpm/core/boundary_rules.hpp"
 #include "mpm/core/shape_functions.hpp"
 
 namespace mpm::core {
@@ -16,8 +17,6 @@ namespace mpm::core {
 namespace {
 /// Nodes with less mass take no part in the grid update (CB-Geo's tolerance, include/node.tcc).
 constexpr double kMassTolerance = 1.0e-15;
-
-double sign_of(double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); }
 
 std::string format_double(double v) {
   std::ostringstream os;
@@ -30,7 +29,9 @@ std::string format_double(double v) {
 StressSmoothing parse_stress_smoothing(const std::string& name) {
   if (name == "none" || name.empty()) return StressSmoothing::None;
   if (name == "cell_volumetric") return StressSmoothing::CellVolumetric;
-  throw common::InputError("analysis.stress_smoothing", "expected \"none\" or \"cell_volumetric\", got \"" + name + "\"");
+  if (name == "nodal_strain") return StressSmoothing::NodalStrain;
+  throw common::InputError("analysis.stress_smoothing",
+                           "expected \"none\", \"cell_volumetric\" or \"nodal_strain\", got \"" + name + "\"");
 }
 
 void ParticleArrays::resize(std::size_t n) {
@@ -54,6 +55,8 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   if (nx_ < 2 || ny_ < 2 || !(grid_.hx > 0) || !(grid_.hy > 0))
     throw common::InputError("mesh", "the node lattice needs at least 2 x 2 nodes and a positive cell size");
   cells_x_ = nx_ - 1;
+  inv_hx_ = 1.0 / grid_.hx;
+  inv_hy_ = 1.0 / grid_.hy;
   cells_y_ = ny_ - 1;
   nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
@@ -201,6 +204,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   force_.assign(2 * nodes_, 0.0);
   velocity_.assign(2 * nodes_, 0.0);
   updated_.assign(4 * nodes_, 0.0);
+  if (smoothing_ == StressSmoothing::NodalStrain) nodal_strain_.assign(3 * nodes_, 0.0);
   thread_grid_.assign(static_cast<std::size_t>(threads_), std::vector<double>(5 * nodes_, 0.0));
   problems_.resize(static_cast<std::size_t>(threads_));
 
@@ -210,8 +214,8 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
 }
 
 std::int64_t Engine::cell_key(double x, double y) const {
-  int i = static_cast<int>(std::floor((x - grid_.x0) / grid_.hx));
-  int j = static_cast<int>(std::floor((y - grid_.y0) / grid_.hy));
+  int i = static_cast<int>(std::floor((x - grid_.x0) * inv_hx_));
+  int j = static_cast<int>(std::floor((y - grid_.y0) * inv_hy_));
   i = std::clamp(i, 0, cells_x_ - 1);
   j = std::clamp(j, 0, cells_y_ - 1);
   return static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_x_;
@@ -368,7 +372,7 @@ template <class Shape>
 void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
   constexpr int W = Shape::kWidth;
   double* g = thread_grid_[static_cast<std::size_t>(t)].data();
-  const double ihx = 1.0 / grid_.hx, ihy = 1.0 / grid_.hy;
+  const double ihx = inv_hx_, ihy = inv_hy_;
   const bool forces_from_next = forces && !mass_momentum;
   for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
     const std::uint32_t p = order_[k];
@@ -493,34 +497,6 @@ void Engine::compute_nodal_velocity(int t) {
   }
 }
 
-/// CB-Geo's friction constraint (include/node.tcc apply_friction_constraints; FORMATS.md section 5): while
-/// the normal acceleration pushes into the boundary (a_n * sign_n > 0), Coulomb friction mu |a_n| acts
-/// on the tangential acceleration: static (a_t = 0) if |a_t| <= mu |a_n| at rest, else reduced by
-/// mu |a_n| against the motion, and never reversing the tangential velocity within the step.
-void Engine::apply_friction(std::size_t n, double& ax, double& ay, double vx, double vy) const {
-  const int dn = friction_dir_[n];
-  const double sn = friction_sign_[n];
-  const double mu = friction_mu_[n];
-  const double an = dn == 0 ? ax : ay;
-  double at = dn == 0 ? ay : ax;
-  const double vt = dn == 0 ? vy : vx;
-  if (an * sn <= 0.0) return;
-  const double limit = mu * std::abs(an);
-  auto sgn = [](double v) { return v > 0.0 ? 1.0 : -1.0; };
-  if (vt != 0.0) {  // kinetic
-    const double v_net = vt + dt_ * at;
-    if (std::abs(v_net) <= dt_ * limit)
-      at = -vt / dt_;
-    else
-      at -= sgn(v_net) * limit;
-  } else if (std::abs(at) <= limit) {  // static
-    at = 0.0;
-  } else {
-    at -= sgn(at) * limit;
-  }
-  (dn == 0 ? ay : ax) = at;
-}
-
 /// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m with Cundall's local damping
 /// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), friction, then
 /// v_new = v + a dt, and the velocity constraints (prescribed velocity, zero acceleration).
@@ -538,13 +514,10 @@ void Engine::integrate_nodes(int t) {
       }
       const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
       double fx = force_[2 * n], fy = force_[2 * n + 1];
-      if (damping_ > 0.0) {
-        const double fn = std::sqrt(fx * fx + fy * fy);
-        fx -= damping_ * fn * sign_of(vx);
-        fy -= damping_ * fn * sign_of(vy);
-      }
+      if (damping_ > 0.0) apply_cundall_damping(damping_, fx, fy, vx, vy);
       double ax = fx / m, ay = fy / m;
-      if (friction_dir_[n] >= 0) apply_friction(n, ax, ay, vx, vy);
+      if (friction_dir_[n] >= 0)
+        apply_friction_rule(friction_dir_[n], friction_sign_[n], friction_mu_[n], dt_, ax, ay, vx, vy);
       double wx = vx + ax * dt_, wy = vy + ay * dt_;
       if (fixed_[n] & 1u) {
         wx = fixed_velocity_[2 * n];
@@ -639,32 +612,33 @@ struct MixedMaterials {
 };
 }  // namespace
 
-/// Strain increment from the grid velocity (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx)
-/// at the particle (CB-Geo compute_strain), the selected checkerboard remedy, the material's stress
-/// update, volume *= 1 + de_v (CB-Geo update_volume) and the strain sums. Writes the next buffer.
+
+/// Stress update: strain increment from the grid velocity at the particle, the selected checkerboard
+/// remedy, then the material's stress update and the carried state (next buffer).
 template <class Shape>
-void Engine::update_stress(int t, const double* grid_velocity, int stride, bool from_next) {
+void Engine::update_stress(int t, const double* grid_velocity, int stride, bool /*from_next*/) {
+  compute_strain_increments<Shape>(t, grid_velocity, stride);
+  if (smoothing_ == StressSmoothing::CellVolumetric) average_volumetric_strain_per_cell(t);
+  if (smoothing_ == StressSmoothing::NodalStrain) smooth_strain_at_nodes<Shape>(t);  // has barriers
   const std::size_t k0 = chunk_[t], k1 = chunk_[t + 1];
-  if (uniform_material_ && !materials_.empty()) {
+  if (uniform_material_) {
     const Material& m = materials_[0];
     if (m.type == io::MaterialType::MohrCoulomb2D)
-      stress_range<SameMaterial<MohrCoulomb>, Shape>(t, k0, k1, grid_velocity, stride, from_next,
-                                                     SameMaterial<MohrCoulomb>{m.mohr_coulomb});
+      update_material_state(k0, k1, t, SameMaterial<MohrCoulomb>{m.mohr_coulomb});
     else
-      stress_range<SameMaterial<LinearElastic>, Shape>(t, k0, k1, grid_velocity, stride, from_next,
-                                                       SameMaterial<LinearElastic>{m.elastic});
+      update_material_state(k0, k1, t, SameMaterial<LinearElastic>{m.elastic});
   } else {
-    stress_range<MixedMaterials, Shape>(t, k0, k1, grid_velocity, stride, from_next, MixedMaterials{materials_});
+    update_material_state(k0, k1, t, MixedMaterials{materials_});
   }
 }
 
-template <class Dispatch, class Shape>
-void Engine::stress_range(int t, std::size_t k0, std::size_t k1, const double* gv, int stride, bool /*from_next*/,
-                          const Dispatch& dispatch) {
+/// (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx), the gradient of the grid velocity at the
+/// particle (CB-Geo compute_strain_rate, without its 1e-15 flush to zero).
+template <class Shape>
+void Engine::compute_strain_increments(int t, const double* gv, int stride) {
   constexpr int W = Shape::kWidth;
   const std::size_t st = static_cast<std::size_t>(stride);
-  // 1. Strain increments.
-  for (std::size_t k = k0; k < k1; ++k) {
+  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
     const double* wk = &weights_[k * 4 * W];
     const double* wx = wk;
     const double* wy = wk + W;
@@ -687,30 +661,101 @@ void Engine::stress_range(int t, std::size_t k0, std::size_t k1, const double* g
     de[1] = dt_ * lyy;
     de[2] = dt_ * (lxy + lyx);
   }
-  // 2. Checkerboard remedy: the cell's volume-weighted mean volumetric increment for all its particles.
-  if (smoothing_ == StressSmoothing::CellVolumetric) {
-    std::size_t a = k0;
-    while (a < k1) {
-      const std::int64_t key = cur_.key[order_[a]];
-      std::size_t b = a;
-      double vsum = 0.0, dvsum = 0.0;
-      while (b < k1 && cur_.key[order_[b]] == key) {
-        const double V = cur_.volume[order_[b]];
-        vsum += V;
-        dvsum += V * (dstrain_[3 * b] + dstrain_[3 * b + 1]);
-        ++b;
+}
+
+/// cell_volumetric remedy: each particle's volumetric increment (dexx + deyy) is replaced by its cell's
+/// volume-weighted mean, split equally between dexx and deyy (the deviatoric part is kept). Thread
+/// chunks start at cell boundaries, so each cell is handled by one thread.
+void Engine::average_volumetric_strain_per_cell(int t) {
+  const std::size_t k1 = chunk_[t + 1];
+  std::size_t a = chunk_[t];
+  while (a < k1) {
+    const std::int64_t key = cur_.key[order_[a]];
+    std::size_t b = a;
+    double vsum = 0.0, dvsum = 0.0;
+    while (b < k1 && cur_.key[order_[b]] == key) {
+      const double V = cur_.volume[order_[b]];
+      vsum += V;
+      dvsum += V * (dstrain_[3 * b] + dstrain_[3 * b + 1]);
+      ++b;
+    }
+    const double mean = dvsum / vsum;
+    for (std::size_t k = a; k < b; ++k) {
+      double* de = &dstrain_[3 * k];
+      const double shift = 0.5 * (mean - (de[0] + de[1]));
+      de[0] += shift;
+      de[1] += shift;
+    }
+    a = b;
+  }
+}
+
+/// nodal_strain remedy: project the strain increment to the nodes (mass-weighted) and back.
+template <class Shape>
+void Engine::smooth_strain_at_nodes(int t) {
+  constexpr int W = Shape::kWidth;
+  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
+  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+    const double* wx = &weights_[k * 4 * W];
+    const double* wy = wx + W;
+    const double m = cur_.mass[order_[k]];
+    const double* de = &dstrain_[3 * k];
+    std::size_t node_row = static_cast<std::size_t>(base_[k]);
+    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+      double* gn = g + 5 * node_row;
+      for (int a = 0; a < W; ++a, gn += 5) {
+        const double mN = m * wx[a] * wy[b];
+        gn[0] += mN * de[0];
+        gn[1] += mN * de[1];
+        gn[2] += mN * de[2];
       }
-      const double mean = dvsum / vsum;
-      for (std::size_t k = a; k < b; ++k) {
-        double* de = &dstrain_[3 * k];
-        const double shift = 0.5 * (mean - (de[0] + de[1]));
-        de[0] += shift;
-        de[1] += shift;
-      }
-      a = b;
     }
   }
-  // 3. Stress update and the per-particle state carried to the next buffer.
+#pragma omp barrier
+  const int rows = bj1_ - bj0_;
+  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
+  for (int j = j0; j < j1; ++j) {
+    for (int i = bi0_; i < bi1_; ++i) {
+      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+      double s[3] = {0, 0, 0};
+      for (auto& buf : thread_grid_) {
+        double* gn = &buf[5 * n];
+        for (int f = 0; f < 3; ++f) {
+          s[f] += gn[f];
+          gn[f] = 0.0;
+        }
+      }
+      const double inv_m = mass_[n] > kMassTolerance ? 1.0 / mass_[n] : 0.0;
+      for (int f = 0; f < 3; ++f) nodal_strain_[3 * n + f] = s[f] * inv_m;
+    }
+  }
+#pragma omp barrier
+  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+    const double* wx = &weights_[k * 4 * W];
+    const double* wy = wx + W;
+    double e[3] = {0, 0, 0};
+    std::size_t node_row = static_cast<std::size_t>(base_[k]);
+    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+      const double* en = &nodal_strain_[3 * node_row];
+      for (int a = 0; a < W; ++a, en += 3) {
+        const double N = wx[a] * wy[b];
+        e[0] += N * en[0];
+        e[1] += N * en[1];
+        e[2] += N * en[2];
+      }
+    }
+    double* de = &dstrain_[3 * k];
+    de[0] = e[0];
+    de[1] = e[1];
+    de[2] = e[2];
+  }
+}
+
+/// The material's stress update with the (possibly smoothed) increment, volume *= 1 + de_v (CB-Geo
+/// update_volume, here with the particle's own increment), the strain sums, and the particle fields
+/// carried unchanged, all into the next buffer.
+template <class Dispatch>
+void Engine::update_material_state(std::size_t k0, std::size_t k1, int t, const Dispatch& dispatch) {
   for (std::size_t k = k0; k < k1; ++k) {
     const std::uint32_t p = order_[k];
     const double* de = &dstrain_[3 * k];
@@ -789,6 +834,10 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
     r.material_id = mat.id;
     r.nstate_vars = static_cast<std::uint32_t>(mat.state_count);
     for (std::size_t i = 0; i < mat.state_count; ++i) r.svars[i] = cur_.svars[p * kStateVariables + i];
+    if (mat.type == io::MaterialType::MohrCoulomb2D) {
+      const double s[4] = {r.stress_xx, r.stress_yy, r.stress_zz, r.tau_xy};
+      MohrCoulomb::set_invariants(s, r.svars);
+    }
     out.push_back(r);
   }
   std::sort(out.begin(), out.end(), [](const io::ParticleRecord& a, const io::ParticleRecord& b) { return a.id < b.id; });

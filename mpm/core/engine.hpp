@@ -27,9 +27,16 @@ enum class StressSmoothing {
   /// family (Hughes 1980; in MPM: Coombs, Charlton, Cortis & Augarde 2018, CMAME 333, sec. 3), which
   /// removes the particle-to-particle pressure oscillation inside a cell.
   CellVolumetric,
+  /// "nodal_strain": mass-weighted nodal smoothing of the strain increment (all three components):
+  /// de_i = sum_p m_p N_ip de_p / m_i at the nodes, then de_p = sum_i N_ip de_i back at the particles
+  /// (the projection CB-Geo's pressure_smoothing applies to the pressure, include/particles/particle.tcc
+  /// map_pressure_to_nodes / compute_pressure_smoothing; the strain-smoothing remedy of e.g. Zhang, Chen &
+  /// Liu 2016, The Material Point Method, sec. 3.6). Replaces the cell-wise constant strain of low-order
+  /// MPM by a continuous field, removing the stair-step / checkerboard stress pattern.
+  NodalStrain,
 };
 
-/// Parses analysis.stress_smoothing ("none" | "cell_volumetric"); throws common::InputError otherwise.
+/// Parses analysis.stress_smoothing ("none" | "cell_volumetric" | "nodal_strain"); throws common::InputError otherwise.
 StressSmoothing parse_stress_smoothing(const std::string& name);
 
 struct ParticleArrays {
@@ -76,15 +83,19 @@ class Engine {
   void sort_particles();  ///< order_ from cur_.key: by cell, then id; drops removed particles
   void throw_first_error() const;
   std::int64_t cell_key(double x, double y) const;
-  void apply_friction(std::size_t node, double& ax, double& ay, double vx, double vy) const;
-  template <class Dispatch, class Shape>
-  void stress_range(int t, std::size_t k0, std::size_t k1, const double* gv, int stride, bool from_next,
-                    const Dispatch& dispatch);
+  template <class Shape>
+  void compute_strain_increments(int t, const double* grid_velocity, int stride);
+  void average_volumetric_strain_per_cell(int t);
+  template <class Shape>
+  void smooth_strain_at_nodes(int t);
+  template <class Dispatch>
+  void update_material_state(std::size_t k0, std::size_t k1, int t, const Dispatch& dispatch);
 
   // grid
   io::Grid grid_;
   int nx_ = 0, ny_ = 0;          ///< nodes per axis
   int cells_x_ = 0, cells_y_ = 0;
+  double inv_hx_ = 1, inv_hy_ = 1;
   std::size_t nodes_ = 0;
   int bi0_ = 0, bi1_ = 0, bj0_ = 0, bj1_ = 0;  ///< active node box [bi0, bi1) x [bj0, bj1)
   std::vector<double> mass_;      ///< nodal mass
@@ -92,6 +103,7 @@ class Engine {
   std::vector<double> force_;     ///< 2 per node (external + internal)
   std::vector<double> velocity_;  ///< 2 per node: momentum / mass, velocity constraints applied
   std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
+  std::vector<double> nodal_strain_;  ///< 3 per node: smoothed strain increment (nodal_strain remedy)
   std::vector<std::vector<double>> thread_grid_;  ///< per thread: 5 per node (m, px, py, fx, fy)
   std::vector<std::uint8_t> fixed_;               ///< bit 0: x fixed, bit 1: y fixed
   std::vector<double> fixed_velocity_;            ///< 2 per node

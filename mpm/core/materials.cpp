@@ -60,15 +60,21 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
       s, de, constitutive::IsotropicElasticity{bulk, shear},
       constitutive::MohrCoulombStrength{svars[0], svars[1], svars[2], tension_cutoff});
   for (int i = 0; i < 4; ++i) stress[i] = r.stress[i];
-  svars[3] = constitutive::haigh_epsilon(r.stress);
-  svars[4] = constitutive::haigh_rho(r.stress);
-  svars[5] = constitutive::lode_angle(r.stress);
+  // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them
+  // when the state is written out, not in the hot loop.
   if (r.region != constitutive::ReturnRegion::Elastic) {
     const Eigen::Vector4d& dp = r.plastic_strain_increment;
     const double mean = (dp[0] + dp[1] + dp[2]) / 3.0;
     const double d0 = dp[0] - mean, d1 = dp[1] - mean, d2 = dp[2] - mean, d3 = 0.5 * dp[3];
     svars[6] = pdstrain + std::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * d3 * d3));
   }
+}
+
+void MohrCoulomb::set_invariants(const double* stress, double* svars) {
+  const constitutive::PlaneStrainStress s(stress[0], stress[1], stress[2], stress[3]);
+  svars[3] = constitutive::haigh_epsilon(s);
+  svars[4] = constitutive::haigh_rho(s);
+  svars[5] = constitutive::lode_angle(s);
 }
 
 Material Material::from(const io::MaterialSpec& spec) {

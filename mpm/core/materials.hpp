@@ -49,6 +49,9 @@ struct MohrCoulomb {
   static MohrCoulomb from(const io::MaterialSpec& spec);
   void initial_state(double* svars) const;
   void update(double* stress, const double* dstrain, double* svars) const;
+  /// CB-Geo's invariant state variables of `stress` (svars[3..5]: epsilon, rho, theta). They depend on
+  /// the stress only, so the engine computes them when it writes the state (snapshot), not every step.
+  static void set_invariants(const double* stress, double* svars);
 };
 
 /// A material of the deck, resolved: its type, its spec id and its model parameters.

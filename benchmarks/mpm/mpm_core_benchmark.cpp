@@ -1,0 +1,151 @@
+// Throughput and accuracy of the MPM engine (not a test; prints figures).
+//
+//   mpm_core_benchmark [--quick]
+//
+// 1. Particle-steps per second on the paper's column: 50 m x 40 m Mohr-Coulomb column (phi 22.2 deg,
+//    c 1 Pa, psi 0, E 172 MPa, nu 0.23, rho 1925) in a 150 m x 45 m domain of 1 m uGIMP cells, 4 x 4
+//    particles per cell (32,000), K0 initial stress, rough base (mu 0.4), USL and MUSL, FLIP, dt at
+//    CFL 0.5. Median over repeats of a timed block of steps, at 1 and 2 threads.
+// 2. Speed against error: the vibrating bar (period error vs the analytical mode) and the column's
+//    runout at t = 2 s against the finest resolution run here, for a few resolutions.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "verification/mpm/mpm_test_decks.hpp"
+
+namespace {
+
+using namespace mpm_test;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+/// The paper's column (see the file comment) at cell size h and ppd x ppd particles per cell.
+Deck paper_column(double h, int ppd, mpm::io::Scheme scheme) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, h, static_cast<int>(std::lround(150 / h)), static_cast<int>(std::lround(45 / h)),
+                        CellType::Gimp16);
+  deck.materials.push_back(mohr_coulomb(0, 1925, 172e6, 0.23, 22.2, 1.0, 0.0));
+  fill_block(deck, 0, 50, 0, 40, ppd, 0);
+  const double k0 = 1 - std::sin(22.2 * std::acos(-1.0) / 180);
+  for (auto& p : deck.particles) {
+    p.stress_yy = -1925 * 9.81 * (40 - p.coord_y);
+    p.stress_xx = p.stress_zz = k0 * p.stress_yy;
+  }
+  const auto& g = deck.grid;
+  deck.velocity_constraints.push_back({nodes_where(g, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
+  deck.velocity_constraints.push_back({nodes_where(g, [](double, double y) { return y <= 1e-9; }), 1, 0.0});
+  deck.friction_constraints.push_back({nodes_where(g, [](double, double y) { return y <= 1e-9; }), 1, -1, 0.4});
+  deck.analysis.scheme = scheme;
+  deck.analysis.gravity = {0, -9.81};
+  deck.analysis.cfl = 0.5;
+  deck.analysis.dt = 1.0;  // upper bound; CFL decides
+  return deck;
+}
+
+double runout_p98(const std::vector<mpm::io::ParticleRecord>& ps) {
+  std::vector<double> x;
+  for (const auto& p : ps) x.push_back(p.coord_x);
+  std::sort(x.begin(), x.end());
+  return x[static_cast<std::size_t>(0.98 * static_cast<double>(x.size() - 1))];
+}
+
+void throughput(bool quick) {
+  std::printf("== Paper column throughput (32,000 uGIMP particles, Mohr-Coulomb, rough base, FLIP, CFL 0.5) ==\n");
+  const int steps = quick ? 50 : 200, repeats = quick ? 3 : 5;
+  for (auto scheme : {mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+    for (int threads : {1, 2}) {
+      const Deck deck = paper_column(1.0, 4, scheme);
+      mpm::core::Simulation sim(deck, threads);
+      for (int i = 0; i < 20; ++i) sim.step();  // warm-up (the column starts to move)
+      std::vector<double> rates;
+      for (int r = 0; r < repeats; ++r) {
+        const auto t0 = Clock::now();
+        for (int i = 0; i < steps; ++i) sim.step();
+        const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+        rates.push_back(static_cast<double>(sim.particle_count()) * steps / s);
+      }
+      std::printf("%-4s threads %d: %6.2f M particle-steps/s (median of %d x %d steps; dt %.4g s)\n",
+                  scheme == mpm::io::Scheme::USL ? "USL" : "MUSL", threads, median(rates) / 1e6, repeats, steps,
+                  sim.dt());
+    }
+  }
+}
+
+/// The vibrating bar's first mode (see tests/verification/mpm/vibrating_bar_test.cpp): returns the
+/// relative period error of the centre-of-mass velocity.
+double bar_period_error(int cells, int ppd, double& seconds) {
+  const double L = 25.0, E = 100.0, rho = 1.0, v0 = 0.1;
+  const double h = L / cells;
+  Deck deck;
+  deck.grid = make_grid(0, 0, h, cells + 1, 1, CellType::Linear4);
+  deck.materials.push_back(elastic(0, rho, E, 0.0));
+  fill_block(deck, 0, L, 0, h, ppd, 0);
+  const double pi = std::acos(-1.0), beta = pi / (2 * L), omega = beta * std::sqrt(E / rho);
+  for (auto& p : deck.particles) p.velocity_x = v0 * std::sin(beta * p.coord_x);
+  deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
+  deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double) { return true; }), 1, 0.0});
+  deck.analysis.scheme = mpm::io::Scheme::MUSL;
+  deck.analysis.cfl = 0.2;
+  deck.analysis.dt = 1.0;
+  mpm::core::Simulation sim(deck, 1);
+  const double period = 2 * pi / omega;
+  double prev = 1, t_cross = 0;
+  int crossings = 0;
+  const auto t0 = Clock::now();
+  while (sim.time() < 1.2 * period) {
+    sim.step();
+    double p = 0;
+    for (const auto& r : sim.snapshot()) p += r.mass * r.velocity_x;
+    if (prev > 0 && p <= 0 && crossings == 0) {
+      t_cross = sim.time() - sim.dt() * p / (p - prev);  // first zero: a quarter period
+      ++crossings;
+    }
+    prev = p;
+  }
+  seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return std::abs(4 * t_cross - period) / period;
+}
+
+void accuracy(bool quick) {
+  std::printf("\n== Vibrating bar (MUSL, linear, 2 ppd, CFL 0.2): period error vs resolution ==\n");
+  for (int cells : {12, 25, 50, 100}) {
+    double s = 0;
+    const double err = bar_period_error(cells, 2, s);
+    std::printf("cells %4d: period error %.3e, %.3f s\n", cells, err, s);
+  }
+  std::printf("\n== Paper column runout at t = %s s (USL, 2 threads) vs cell size ==\n", quick ? "0.5" : "2");
+  const double t_end = quick ? 0.5 : 2.0;
+  std::vector<std::pair<double, double>> results;
+  for (double h : {2.0, 1.0, 0.5}) {
+    if (quick && h < 1.0) continue;
+    const Deck deck = paper_column(h, h > 1.5 ? 4 : 4, mpm::io::Scheme::USL);
+    mpm::core::Simulation sim(deck, 2);
+    const auto t0 = Clock::now();
+    while (sim.time() < t_end) sim.step();
+    const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+    results.push_back({h, runout_p98(sim.snapshot())});
+    std::printf("h %.2f m: %7zu particles, runout P98(x) %.4f m, %.2f s wall\n", h, sim.particle_count(),
+                results.back().second, s);
+  }
+  const double ref = results.back().second;
+  for (const auto& [h, r] : results)
+    std::printf("h %.2f m: runout difference from the finest run %.4f m (%.2f %%)\n", h, r - ref,
+                100 * (r - ref) / ref);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  throughput(quick);
+  if (!(argc > 1 && std::strcmp(argv[1], "--throughput") == 0)) accuracy(quick);
+  return 0;
+}
