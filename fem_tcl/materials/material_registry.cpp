@@ -2,7 +2,9 @@
 
 #include <array>
 
+#include "fem_tcl/materials/drucker_prager.hpp"
 #include "fem_tcl/materials/elastic_isotropic.hpp"
+#include "fem_tcl/materials/mohr_coulomb.hpp"
 
 namespace fem::materials {
 
@@ -10,6 +12,8 @@ namespace {
 // One line per material type (add a line here and the sources to CMakeLists.txt).
 constexpr std::array kParsers{
     MaterialParserEntry{"ElasticIsotropic", parse_elastic_isotropic},
+    MaterialParserEntry{"DruckerPrager", parse_drucker_prager},
+    MaterialParserEntry{"MohrCoulomb", parse_mohr_coulomb},
 };
 }  // namespace
 

@@ -1,0 +1,90 @@
+#pragma once
+// Mohr-Coulomb perfect plasticity for plane-strain continuum elements: `nDMaterial MohrCoulomb tag E nu rho phi
+// c psi <-tension T>` (this project's command; OpenSees has no plane-strain Mohr-Coulomb). The stress update is
+// constitutive::mohr_coulomb_update (exact return in principal stresses onto face / edges / apex + Rankine
+// cutoff; de Souza Neto, Peric & Owen 2008, sec. 8.2, Boxes 8.4-8.6), the tangent its consistent tangent.
+//
+// Stress (sxx syy sxy), strain (exx eyy gxy), tension positive; szz is tracked (plane strain, ezz = 0) and
+// recorded through the `stress3D` response (sxx syy szz sxy syz sxz).
+//
+// Stages (`updateMaterialStage -material tag -stage s`, or `setParameter ... updateMaterialStage|materialState`):
+//   0 = linear elastic (the stage after creation, so that a gravity stage builds an elastic geostatic state),
+//   1 = Mohr-Coulomb plastic. The stress carries over the switch; the update is incremental from the last
+//   committed stress.
+#include "common/command_args.hpp"
+#include "constitutive/mohr_coulomb.hpp"
+#include "fem_tcl/materials/nd_material.hpp"
+
+namespace fem::materials {
+
+struct MohrCoulombParameters {
+  double young;              ///< E
+  double poisson;            ///< nu
+  double density;            ///< rho (mass per volume)
+  double friction_deg;       ///< phi, degrees
+  double cohesion;           ///< c >= 0
+  double dilation_deg;       ///< psi, degrees
+  std::optional<double> tension;  ///< Rankine cutoff T on the major principal stress; none when absent
+};
+
+class MohrCoulomb final : public NDMaterial {
+ public:
+  /// Throws common::InputError: E > 0, -1 < nu < 0.5, rho >= 0, 0 <= phi < 90, c >= 0, 0 <= psi < 90, T >= 0.
+  MohrCoulomb(int tag, const MohrCoulombParameters& params);
+
+  std::string type_name() const override { return "MohrCoulomb"; }
+  /// Plane strain only; plane stress throws common::InputError.
+  std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
+
+  void set_trial_strain(const Vector3& strain) override;
+  const Vector3& strain() const override { return strain_; }
+  const Vector3& stress() const override { return stress_; }
+  const Matrix3& tangent() const override { return tangent_; }
+  Matrix3 initial_tangent() const override { return elastic_tangent(); }
+  void commit_state() override;
+  void revert_to_last_commit() override;
+  void revert_to_start() override;
+
+  double density() const override { return params_.density; }
+  Vector6 stress_3d() const override;
+  /// E, nu, rho, phi (deg), c, psi (deg), tension; and updateMaterialStage / materialState (the stage).
+  bool set_parameter(std::string_view name, double value) override;
+  /// 0 = elastic, 1 = plastic; any other stage throws common::InputError.
+  bool update_stage(int stage) override;
+  /// stress, strain, stress3D, plus `plasticStrain` (exx eyy ezz gxy, accumulated, committed + this step)
+  /// and `yieldRegion` (0 elastic, 1 face, 2 TC edge, 3 TE edge, 4 apex, 5.. tension cutoff sets).
+  std::optional<std::vector<double>> response(std::string_view name) const override;
+  /// {"name": "<tag>", "type": "MohrCoulomb", "E", "nu", "rho", "phi" (deg), "c", "psi" (deg), "tension" (T or null)}
+  nlohmann::json to_json() const override;
+
+  int stage() const { return stage_; }
+  constitutive::ReturnRegion region() const { return region_; }
+  const Eigen::Vector4d& stress_plane_strain() const { return trial_stress4_; }
+
+ private:
+  Matrix3 elastic_tangent() const;
+  void update_constants();
+  void validate() const;
+
+  MohrCoulombParameters params_;
+  constitutive::IsotropicElasticity elasticity_{};
+  constitutive::MohrCoulombStrength strength_{};
+  int stage_ = 0;
+
+  // committed
+  Vector3 committed_strain_ = Vector3::Zero();
+  Eigen::Vector4d committed_stress4_ = Eigen::Vector4d::Zero();  // sxx syy szz sxy
+  Eigen::Vector4d committed_plastic_ = Eigen::Vector4d::Zero();
+  // trial
+  Vector3 strain_ = Vector3::Zero();
+  Eigen::Vector4d trial_stress4_ = Eigen::Vector4d::Zero();
+  Eigen::Vector4d trial_plastic_ = Eigen::Vector4d::Zero();
+  Vector3 stress_ = Vector3::Zero();
+  Matrix3 tangent_ = Matrix3::Zero();
+  constitutive::ReturnRegion region_ = constitutive::ReturnRegion::Elastic;
+};
+
+/// `nDMaterial MohrCoulomb tag E nu rho phi c psi <-tension T>` (args start at the tag; angles in degrees).
+std::unique_ptr<NDMaterial> parse_mohr_coulomb(common::CommandArgs& args);
+
+}  // namespace fem::materials
