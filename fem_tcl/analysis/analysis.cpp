@@ -1,0 +1,408 @@
+#include "fem_tcl/analysis/analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <unordered_map>
+
+#include "common/input_error.hpp"
+
+namespace fem::analysis {
+
+using domain::Matrix8;
+using domain::Vector8;
+
+Analysis::Analysis(domain::Domain& domain, AnalysisConfig config)
+    : domain_(domain), config_(std::move(config)), test_(config_.test) {
+  SolverKind kind{};
+  if (!solver_kind_for(config_.system, kind)) throw common::InputError("system", "unknown system '" + config_.system + "'");
+  solver_ = std::make_unique<LinearSolver>(kind);
+  d_lambda_ = config_.integrator.d_lambda;
+}
+
+void Analysis::setup() {
+  if (version_ == domain_.version()) return;
+  nodes_.clear();
+  std::unordered_map<const domain::Node*, int> index;
+  for (const auto& [tag, n] : domain_.nodes()) {
+    index[n.get()] = static_cast<int>(nodes_.size());
+    nodes_.push_back(n.get());
+  }
+  const int ndof = 2 * static_cast<int>(nodes_.size());
+  constexpr int kFree = 0, kFixed = -1;
+  std::vector<int> state(ndof, kFree);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    for (int d = 0; d < 2; ++d) if (nodes_[i]->fixed[d]) state[2 * i + d] = kFixed;
+  }
+  prescribed_.clear();
+  for (const auto& [tag, p] : domain_.patterns()) {
+    for (const auto& sp : p->prescribed) {
+      const domain::Node* n = domain_.find_node(sp.node);
+      if (!n) continue;
+      const int dof = 2 * index[n] + sp.dof;
+      state[dof] = kFixed;
+      prescribed_.push_back({dof, p.get(), sp.value});
+    }
+  }
+  // equalDOF: the constrained dof takes the retained dof's equation (a transformation with T = I).
+  std::vector<int> alias(ndof, -1);
+  for (const auto& c : domain_.equal_dofs()) {
+    const domain::Node* r = domain_.find_node(c.retained);
+    const domain::Node* k = domain_.find_node(c.constrained);
+    if (!r || !k) continue;
+    for (int d : c.dofs) alias[2 * index[k] + d] = 2 * index[r] + d;
+  }
+  eq_.assign(ndof, -1);
+  neq_ = 0;
+  for (int i = 0; i < ndof; ++i) {
+    if (state[i] == kFree && alias[i] < 0) eq_[i] = neq_++;
+  }
+  for (int i = 0; i < ndof; ++i) {
+    if (alias[i] >= 0 && state[i] == kFree) {
+      int r = alias[i];
+      for (int guard = 0; guard < ndof && alias[r] >= 0; ++guard) r = alias[r];
+      eq_[i] = state[r] == kFree ? eq_[r] : -1;
+    }
+  }
+  if (!domain_.equal_dofs().empty() && config_.handler == HandlerType::Plain) {
+    std::cerr << "WARNING constraints Plain: equalDOF constraints are enforced by transformation\n";
+  }
+
+  elements_.clear();
+  element_eq_.clear();
+  for (const auto& [tag, e] : domain_.elements()) {
+    elements_.push_back(e.get());
+    std::array<int, 8> ids{};
+    for (int a = 0; a < 4; ++a) {
+      const int ni = index[e->nodes()[a]];
+      ids[2 * a] = eq_[2 * ni];
+      ids[2 * a + 1] = eq_[2 * ni + 1];
+    }
+    element_eq_.push_back(ids);
+  }
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(elements_.size() * 64 + neq_);
+  for (int i = 0; i < neq_; ++i) triplets.emplace_back(i, i, 0.0);
+  for (const auto& ids : element_eq_) {
+    for (int a : ids) {
+      if (a < 0) continue;
+      for (int b : ids) if (b >= 0) triplets.emplace_back(a, b, 0.0);
+    }
+  }
+  Eigen::SparseMatrix<double> A(neq_, neq_);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  A.makeCompressed();
+  const auto position = [&](int row, int col) {
+    const int* begin = A.innerIndexPtr() + A.outerIndexPtr()[col];
+    const int* end = A.innerIndexPtr() + A.outerIndexPtr()[col + 1];
+    const int* it = std::lower_bound(begin, end, row);
+    return static_cast<int>(it - A.innerIndexPtr());
+  };
+  element_pos_.assign(element_eq_.size(), {});
+  for (std::size_t e = 0; e < element_eq_.size(); ++e) {
+    const auto& ids = element_eq_[e];
+    for (int i = 0; i < 8; ++i) {
+      for (int j = 0; j < 8; ++j) {
+        element_pos_[e][8 * j + i] = (ids[i] >= 0 && ids[j] >= 0) ? position(ids[i], ids[j]) : -1;
+      }
+    }
+  }
+  diag_pos_.resize(neq_);
+  for (int i = 0; i < neq_; ++i) diag_pos_[i] = position(i, i);
+  solver_->set_pattern(std::move(A));
+  R_.setZero(neq_);
+  dx_.setZero(neq_);
+  full_.setZero(ndof);
+  U_.setZero(ndof); Ud_.setZero(ndof); Udd_.setZero(ndof);
+  Ut_.setZero(ndof); Utd_.setZero(ndof); Utm1_.setZero(ndof);
+  have_previous_ = false;
+  version_ = domain_.version();
+}
+
+void Analysis::form_tangent() {
+  double* values = solver_->matrix().valuePtr();
+  solver_->zero_values();
+  const domain::RayleighFactors& node_damping = domain_.rayleigh();
+  Matrix8 ke;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    domain::Element& el = *elements_[e];
+    ke.noalias() = c1_ * el.tangent_stiffness();
+    if (c2_ != 0.0 || c3_ != 0.0) {
+      const domain::RayleighFactors& f = el.rayleigh();
+      if (c2_ != 0.0) {
+        if (f.beta_k != 0.0) ke.noalias() += (c2_ * f.beta_k) * el.tangent_stiffness();
+        if (f.beta_k0 != 0.0) ke.noalias() += (c2_ * f.beta_k0) * el.initial_stiffness();
+        if (f.beta_kc != 0.0) ke.noalias() += (c2_ * f.beta_kc) * el.committed_tangent();
+      }
+      const double cm = c3_ + c2_ * f.alpha_m;
+      if (cm != 0.0) ke.diagonal() += cm * el.lumped_mass();
+    }
+    const auto& pos = element_pos_[e];
+    const double* k = ke.data();
+    for (int i = 0; i < 64; ++i) {
+      if (pos[i] >= 0) values[pos[i]] += k[i];
+    }
+  }
+  if (c2_ != 0.0 || c3_ != 0.0) {
+    const double cm = c3_ + c2_ * node_damping.alpha_m;
+    for (std::size_t n = 0; n < nodes_.size(); ++n) {
+      if (!nodes_[n]->has_mass) continue;
+      for (int d = 0; d < 2; ++d) {
+        const int q = eq_[2 * n + d];
+        if (q >= 0) values[diag_pos_[q]] += cm * nodes_[n]->mass[d];
+      }
+    }
+  }
+  // A free dof that nothing stiffens makes the system singular: name it.
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    for (int d = 0; d < 2; ++d) {
+      const int q = eq_[2 * n + d];
+      if (q >= 0 && values[diag_pos_[q]] == 0.0) {
+        throw common::NumericalError("the system matrix is singular: node " + std::to_string(nodes_[n]->tag) +
+                                     " dof " + std::to_string(d + 1) +
+                                     " has no stiffness (unconnected node or missing support)");
+      }
+    }
+  }
+  solver_->factor();
+}
+
+void Analysis::form_unbalance() {
+  R_.setZero();
+  const bool dynamic = config_.transient;
+  const double node_alpha = domain_.rayleigh().alpha_m;
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    const domain::Node& nd = *nodes_[n];
+    for (int d = 0; d < 2; ++d) {
+      const int q = eq_[2 * n + d];
+      if (q < 0) continue;
+      double r = nd.load[d];
+      if (dynamic && nd.has_mass) r -= nd.mass[d] * (nd.accel[d] + node_alpha * nd.vel[d]);
+      R_[q] += r;
+    }
+  }
+  Vector8 f;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    domain::Element& el = *elements_[e];
+    f.noalias() = el.resisting_force();
+    if (dynamic) {
+      const Vector8& m = el.lumped_mass();
+      Vector8 a, v;
+      for (int i = 0; i < 4; ++i) {
+        a[2 * i] = el.nodes()[i]->accel[0];
+        a[2 * i + 1] = el.nodes()[i]->accel[1];
+      }
+      f += m.cwiseProduct(a);
+      const domain::RayleighFactors& rf = el.rayleigh();
+      if (rf.any()) {
+        v = el.trial_velocity();
+        if (rf.alpha_m != 0.0) f += rf.alpha_m * m.cwiseProduct(v);
+        if (rf.beta_k != 0.0) f.noalias() += rf.beta_k * (el.tangent_stiffness() * v);
+        if (rf.beta_k0 != 0.0) f.noalias() += rf.beta_k0 * (el.initial_stiffness() * v);
+        if (rf.beta_kc != 0.0) f.noalias() += rf.beta_kc * (el.committed_tangent() * v);
+      }
+    }
+    const auto& ids = element_eq_[e];
+    for (int i = 0; i < 8; ++i) {
+      if (ids[i] >= 0) R_[ids[i]] -= f[i];
+    }
+  }
+}
+
+void Analysis::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) { solver_->solve(rhs, x); }
+
+void Analysis::update(const Eigen::VectorXd& dU) {
+  const int ndof = static_cast<int>(eq_.size());
+  for (int i = 0; i < ndof; ++i) full_[i] = eq_[i] >= 0 ? dU[eq_[i]] : 0.0;
+  apply_increment(full_);
+}
+
+void Analysis::apply_increment(const Eigen::VectorXd& full) {
+  const IntegratorConfig& ic = config_.integrator;
+  const int nn = static_cast<int>(nodes_.size());
+  switch (ic.type) {
+    case IntegratorType::LoadControl:
+      for (int n = 0; n < nn; ++n) {
+        for (int d = 0; d < 2; ++d) {
+          nodes_[n]->disp[d] += full[2 * n + d];
+          nodes_[n]->incr_disp[d] += full[2 * n + d];
+        }
+      }
+      break;
+    case IntegratorType::Newmark:
+    case IntegratorType::HHT: {
+      const double alpha = ic.type == IntegratorType::HHT ? ic.alpha : 1.0;
+      U_ += full;
+      Ud_ += c2_ / alpha * full;   // c2_ holds alpha * gamma / (beta dt)
+      Udd_ += c3_ * full;
+      for (int n = 0; n < nn; ++n) {
+        for (int d = 0; d < 2; ++d) {
+          const int i = 2 * n + d;
+          domain::Node& nd = *nodes_[n];
+          if (alpha == 1.0) {
+            nd.disp[d] = U_[i];
+            nd.vel[d] = Ud_[i];
+          } else {
+            nd.disp[d] = Ut_[i] + alpha * (U_[i] - Ut_[i]);
+            nd.vel[d] = Utd_[i] + alpha * (Ud_[i] - Utd_[i]);
+          }
+          nd.accel[d] = Udd_[i];
+          nd.incr_disp[d] = nd.disp[d] - nd.committed_disp[d];
+        }
+      }
+      break;
+    }
+    case IntegratorType::CentralDifference:
+      for (int n = 0; n < nn; ++n) {
+        for (int d = 0; d < 2; ++d) {
+          const double du = full[2 * n + d];
+          nodes_[n]->disp[d] += du;
+          nodes_[n]->vel[d] += c2_ * du;
+          nodes_[n]->accel[d] += c3_ * du;
+          nodes_[n]->incr_disp[d] += du;
+        }
+      }
+      break;
+  }
+  domain_.update_elements();
+}
+
+void Analysis::impose_prescribed() {
+  if (prescribed_.empty()) return;
+  full_.setZero();
+  const double t = domain_.time();
+  for (const auto& p : prescribed_) {
+    const int n = p.dof / 2, d = p.dof % 2;
+    full_[p.dof] = p.pattern->factor(t) * p.value - nodes_[n]->disp[d];
+  }
+  apply_increment(full_);
+}
+
+void Analysis::new_step(double dt) {
+  const IntegratorConfig& ic = config_.integrator;
+  const int nn = static_cast<int>(nodes_.size());
+  step_start_time_ = domain_.committed_time();
+  switch (ic.type) {
+    case IntegratorType::LoadControl: {
+      if (ic.desired_iter > 0 && last_iterations_ > 0) {
+        d_lambda_ *= static_cast<double>(ic.desired_iter) / last_iterations_;
+        d_lambda_ = std::clamp(d_lambda_, std::min(ic.min_lambda, ic.max_lambda), std::max(ic.min_lambda, ic.max_lambda));
+      }
+      c1_ = 1.0; c2_ = 0.0; c3_ = 0.0;
+      const double t = step_start_time_ + d_lambda_;
+      domain_.set_time(t);
+      domain_.apply_loads(t);
+      break;
+    }
+    case IntegratorType::Newmark:
+    case IntegratorType::HHT: {
+      const double alpha = ic.type == IntegratorType::HHT ? ic.alpha : 1.0;
+      const double g = ic.gamma, b = ic.beta;
+      c1_ = alpha;
+      c2_ = alpha * g / (b * dt);
+      c3_ = 1.0 / (b * dt * dt);
+      for (int n = 0; n < nn; ++n) {
+        domain::Node& nd = *nodes_[n];
+        for (int d = 0; d < 2; ++d) {
+          const int i = 2 * n + d;
+          const double cv = nd.committed_vel[d], ca = nd.committed_accel[d];
+          Ut_[i] = nd.committed_disp[d];
+          Utd_[i] = cv;
+          U_[i] = Ut_[i];
+          Ud_[i] = (1.0 - g / b) * cv + dt * (1.0 - 0.5 * g / b) * ca;
+          Udd_[i] = -cv / (b * dt) + (1.0 - 0.5 / b) * ca;
+          nd.disp[d] = U_[i];
+          nd.vel[d] = alpha == 1.0 ? Ud_[i] : Utd_[i] + alpha * (Ud_[i] - Utd_[i]);
+          nd.accel[d] = Udd_[i];
+          nd.incr_disp[d] = 0.0;
+        }
+      }
+      const double t = step_start_time_ + alpha * dt;
+      domain_.set_time(t);
+      domain_.apply_loads(t);
+      domain_.update_elements();
+      break;
+    }
+    case IntegratorType::CentralDifference: {
+      c1_ = 0.0;
+      c2_ = 0.5 / dt;
+      c3_ = 1.0 / (dt * dt);
+      for (int n = 0; n < nn; ++n) {
+        domain::Node& nd = *nodes_[n];
+        for (int d = 0; d < 2; ++d) {
+          const int i = 2 * n + d;
+          if (!have_previous_) {
+            Utm1_[i] = nd.committed_disp[d] - dt * nd.committed_vel[d] + 0.5 * dt * dt * nd.committed_accel[d];
+          }
+          const double v_half = (nd.committed_disp[d] - Utm1_[i]) / dt;
+          nd.disp[d] = nd.committed_disp[d];
+          nd.vel[d] = 0.5 * v_half;
+          nd.accel[d] = -v_half / dt;
+          nd.incr_disp[d] = 0.0;
+        }
+      }
+      // equilibrium at t_n: loads at the start of the step
+      domain_.set_time(step_start_time_);
+      domain_.apply_loads(step_start_time_);
+      domain_.update_elements();
+      break;
+    }
+  }
+  impose_prescribed();
+}
+
+void Analysis::commit_step(double dt) {
+  const IntegratorConfig& ic = config_.integrator;
+  const int nn = static_cast<int>(nodes_.size());
+  if (ic.type == IntegratorType::HHT && ic.alpha != 1.0) {
+    for (int n = 0; n < nn; ++n) {
+      for (int d = 0; d < 2; ++d) {
+        nodes_[n]->disp[d] = U_[2 * n + d];
+        nodes_[n]->vel[d] = Ud_[2 * n + d];
+        nodes_[n]->accel[d] = Udd_[2 * n + d];
+      }
+    }
+    domain_.update_elements();
+  }
+  if (!ic.is_static()) domain_.set_time(step_start_time_ + dt);
+  if (ic.type == IntegratorType::CentralDifference) {
+    for (int n = 0; n < nn; ++n) {
+      for (int d = 0; d < 2; ++d) Utm1_[2 * n + d] = nodes_[n]->committed_disp[d];
+    }
+    have_previous_ = true;
+  }
+  domain_.commit();
+}
+
+int Analysis::analyze(int steps, double dt) {
+  if (config_.transient && !(dt > 0.0)) throw common::InputError("analyze", "expected dt > 0 for a transient analysis");
+  for (int s = 0; s < steps; ++s) {
+    int iterations = 0;
+    try {
+      setup();
+      new_step(dt);
+      if (!solve_step(config_.algorithm, *this, test_, iterations)) {
+        std::cerr << "WARNING " << (config_.transient ? "DirectIntegrationAnalysis" : "StaticAnalysis")
+                  << "::analyze() - the Algorithm failed at time " << domain_.time()
+                  << "; the domain is reverted to the last committed state (t = " << domain_.committed_time()
+                  << ")\n";
+        domain_.revert_to_last_commit();
+        stats_.iterations += iterations;
+        return -3;
+      }
+    } catch (const common::NumericalError& e) {
+      std::cerr << "WARNING analyze: " << e.what() << " at time " << domain_.time()
+                << "; the domain is reverted to the last committed state (t = " << domain_.committed_time() << ")\n";
+      domain_.revert_to_last_commit();
+      return -3;
+    }
+    last_iterations_ = std::max(iterations, 1);
+    stats_.iterations += iterations;
+    ++stats_.steps;
+    commit_step(dt);
+  }
+  stats_.factorizations = solver_->factorizations();
+  return 0;
+}
+
+}  // namespace fem::analysis

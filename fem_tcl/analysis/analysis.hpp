@@ -1,0 +1,93 @@
+#pragma once
+// One analysis (OpenSees StaticAnalysis / DirectIntegrationAnalysis): dof numbering with the constraints
+// eliminated, the sparse system, the integrator's predictor/corrector, the algorithm and the commit.
+// `analyze` returns 0 or a negative code as OpenSees does; a failed step is reverted to the last commit,
+// so a script that ignores the code keeps the last converged state, never a diverged one.
+#include <Eigen/Core>
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fem_tcl/analysis/algorithm.hpp"
+#include "fem_tcl/analysis/convergence_test.hpp"
+#include "fem_tcl/analysis/integrator.hpp"
+#include "fem_tcl/analysis/linear_solver.hpp"
+#include "fem_tcl/domain/domain.hpp"
+
+namespace fem::analysis {
+
+enum class HandlerType { Plain, Transformation, Penalty };
+
+struct AnalysisConfig {
+  HandlerType handler = HandlerType::Plain;
+  std::string numberer = "RCM";
+  std::string system = "ProfileSPD";
+  TestConfig test;
+  AlgorithmConfig algorithm;
+  IntegratorConfig integrator;
+  bool transient = false;
+};
+
+struct AnalysisStats {
+  long steps = 0;
+  long iterations = 0;
+  long factorizations = 0;
+};
+
+class Analysis final : public StepProblem {
+ public:
+  Analysis(domain::Domain& domain, AnalysisConfig config);
+
+  /// Runs `steps` steps (dt ignored by static analyses). Returns 0, or -2 (step could not start),
+  /// -3 (the algorithm failed or the system is singular; warning on stderr, state reverted).
+  int analyze(int steps, double dt);
+  const AnalysisStats& stats() const { return stats_; }
+  const AnalysisConfig& config() const { return config_; }
+  int equations() const override { return neq_; }
+
+  // StepProblem
+  void form_tangent() override;
+  void form_unbalance() override;
+  const Eigen::VectorXd& unbalance() const override { return R_; }
+  void solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) override;
+  void update(const Eigen::VectorXd& dU) override;
+
+ private:
+  struct Prescribed { int dof; const domain::LoadPattern* pattern; double value; };
+  void setup();
+  void new_step(double dt);
+  void apply_increment(const Eigen::VectorXd& full);  // full-dof increment through the integrator
+  void commit_step(double dt);
+  void impose_prescribed();
+
+  domain::Domain& domain_;
+  AnalysisConfig config_;
+  ConvergenceTest test_;
+  std::unique_ptr<LinearSolver> solver_;
+  long version_ = -1;
+
+  std::vector<domain::Node*> nodes_;
+  std::vector<domain::Element*> elements_;
+  std::vector<int> eq_;                          ///< per node dof (2 per node): equation or -1
+  std::vector<std::array<int, 8>> element_eq_;
+  std::vector<std::array<int, 64>> element_pos_;  ///< value positions in A (or -1)
+  std::vector<int> diag_pos_;                    ///< per equation
+  std::vector<Prescribed> prescribed_;
+  int neq_ = 0;
+
+  Eigen::VectorXd R_;
+  Eigen::VectorXd full_;  ///< full-dof work vector
+  Eigen::VectorXd dx_;
+  // Newmark / HHT / central-difference state (full dofs)
+  Eigen::VectorXd U_, Ud_, Udd_, Ut_, Utd_, Utm1_;
+  bool have_previous_ = false;
+  double c1_ = 1.0, c2_ = 0.0, c3_ = 0.0;  ///< tangent = c1 K + c2 C + c3 M
+  double step_start_time_ = 0.0;
+  double d_lambda_ = 0.0;
+  int last_iterations_ = 1;
+  AnalysisStats stats_;
+};
+
+}  // namespace fem::analysis

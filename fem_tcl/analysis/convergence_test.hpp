@@ -1,0 +1,42 @@
+#pragma once
+// Convergence tests of OpenSees (SRC/analysis/algorithm/equiSolnAlgo/..., CTest*):
+//   NormDispIncr   ||dU||_2            <= tol
+//   NormUnbalance  ||R||_2             <= tol   (R: unbalance after the update)
+//   EnergyIncr     0.5 |dU . R|        <= tol   (R as above; OpenSees reads the SOE's current B)
+// test() returns the iteration count when converged, -1 to continue, -2 when maxIter is reached.
+#include <Eigen/Core>
+#include <string>
+
+#include "common/command_args.hpp"
+
+namespace fem::analysis {
+
+enum class TestType { NormDispIncr, NormUnbalance, EnergyIncr };
+
+struct TestConfig {
+  TestType type = TestType::NormUnbalance;
+  double tol = 1e-6;
+  int max_iter = 25;
+  int print_flag = 0;
+};
+
+/// `test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter <printFlag> <normType>` (args at the type word).
+TestConfig parse_test(common::CommandArgs& args);
+std::string test_name(TestType type);
+
+class ConvergenceTest {
+ public:
+  explicit ConvergenceTest(TestConfig config) : config_(config) {}
+  void start() { iteration_ = 1; }
+  int test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R);
+  double last_norm() const { return norm_; }
+  int iteration() const { return iteration_; }
+  const TestConfig& config() const { return config_; }
+
+ private:
+  TestConfig config_;
+  int iteration_ = 1;
+  double norm_ = 0.0;
+};
+
+}  // namespace fem::analysis

@@ -1,0 +1,166 @@
+#include "fem_tcl/domain/domain.hpp"
+
+#include "common/input_error.hpp"
+
+namespace fem::domain {
+
+Node& Domain::add_node(int tag, double x, double y, const std::string& where) {
+  if (nodes_.count(tag)) throw common::InputError(where, "node " + std::to_string(tag) + " already exists");
+  auto node = std::make_unique<Node>();
+  node->tag = tag;
+  node->crd = Vector2(x, y);
+  Node& ref = *node;
+  nodes_.emplace(tag, std::move(node));
+  ++version_;
+  return ref;
+}
+
+void Domain::add_element(std::unique_ptr<Element> element, const std::string& where) {
+  const int tag = element->tag();
+  if (elements_.count(tag)) throw common::InputError(where, "element " + std::to_string(tag) + " already exists");
+  elements_.emplace(tag, std::move(element));
+  ++version_;
+}
+
+void Domain::add_pattern(std::unique_ptr<LoadPattern> pattern, const std::string& where) {
+  const int tag = pattern->tag();
+  if (patterns_.count(tag)) throw common::InputError(where, "load pattern " + std::to_string(tag) + " already exists");
+  patterns_.emplace(tag, std::move(pattern));
+  ++version_;
+}
+
+bool Domain::remove_pattern(int tag) {
+  const bool removed = patterns_.erase(tag) > 0;
+  if (removed) ++version_;
+  return removed;
+}
+
+void Domain::clear() {
+  flush_recorders();
+  recorders_.clear();
+  patterns_.clear();
+  elements_.clear();
+  nodes_.clear();
+  equal_dofs_.clear();
+  rayleigh_ = {};
+  time_ = committed_time_ = 0.0;
+  ground_accel_.setZero();
+  ++version_;
+}
+
+Node* Domain::find_node(int tag) {
+  auto it = nodes_.find(tag);
+  return it == nodes_.end() ? nullptr : it->second.get();
+}
+const Node* Domain::find_node(int tag) const {
+  auto it = nodes_.find(tag);
+  return it == nodes_.end() ? nullptr : it->second.get();
+}
+Node& Domain::node(int tag, const std::string& where) {
+  Node* n = find_node(tag);
+  if (!n) throw common::InputError(where, "node " + std::to_string(tag) + " does not exist");
+  return *n;
+}
+Element* Domain::find_element(int tag) {
+  auto it = elements_.find(tag);
+  return it == elements_.end() ? nullptr : it->second.get();
+}
+Element& Domain::element(int tag, const std::string& where) {
+  Element* e = find_element(tag);
+  if (!e) throw common::InputError(where, "element " + std::to_string(tag) + " does not exist");
+  return *e;
+}
+LoadPattern* Domain::find_pattern(int tag) {
+  auto it = patterns_.find(tag);
+  return it == patterns_.end() ? nullptr : it->second.get();
+}
+
+void Domain::apply_loads(double time) {
+  for (auto& [tag, n] : nodes_) n->load.setZero();
+  for (auto& [tag, e] : elements_) e->zero_load();
+  ground_accel_.setZero();
+  for (auto& [tag, p] : patterns_) p->apply(*this, time);
+}
+
+void Domain::set_load_const() {
+  for (auto& [tag, p] : patterns_) p->set_load_const();
+}
+
+void Domain::update_elements() {
+  for (auto& [tag, e] : elements_) e->update();
+}
+
+void Domain::commit() {
+  for (auto& [tag, n] : nodes_) n->commit();
+  for (auto& [tag, e] : elements_) e->commit_state();
+  committed_time_ = time_;
+  record();
+}
+
+void Domain::record() {
+  for (auto& r : recorders_) r->record(time_);
+}
+
+void Domain::flush_recorders() {
+  for (auto& r : recorders_) r->flush();
+}
+
+void Domain::revert_to_last_commit() {
+  for (auto& [tag, n] : nodes_) n->revert_to_last_commit();
+  for (auto& [tag, e] : elements_) e->revert_to_last_commit();
+  time_ = committed_time_;
+  update_elements();
+}
+
+void Domain::revert_to_start() {
+  for (auto& [tag, n] : nodes_) n->revert_to_start();
+  for (auto& [tag, e] : elements_) e->revert_to_start();
+  time_ = committed_time_ = 0.0;
+  update_elements();
+}
+
+void Domain::compute_reactions() {
+  for (auto& [tag, n] : nodes_) n->reaction = -n->load;
+  for (auto& [tag, e] : elements_) {
+    const Vector8& f = e->resisting_force();
+    for (int i = 0; i < 4; ++i) {
+      e->nodes()[i]->reaction[0] += f[2 * i];
+      e->nodes()[i]->reaction[1] += f[2 * i + 1];
+    }
+  }
+}
+
+void Domain::set_rayleigh(const RayleighFactors& f) {
+  rayleigh_ = f;
+  for (auto& [tag, e] : elements_) e->set_rayleigh(f);
+}
+
+void PlainPattern::apply(Domain& domain, double time) {
+  const double f = factor(time);
+  last_factor_ = f;
+  for (const auto& l : nodal_loads) {
+    if (Node* n = domain.find_node(l.node)) {
+      n->load[0] += f * l.fx;
+      n->load[1] += f * l.fy;
+    }
+  }
+  for (const auto& sw : self_weight) {
+    for (int etag : sw.elements) {
+      if (Element* e = domain.find_element(etag)) e->add_self_weight(f, sw.xf, sw.yf);
+    }
+  }
+}
+
+void UniformExcitation::apply(Domain& domain, double time) {
+  const double ag = factor(time);
+  last_factor_ = ag;
+  Vector2 a = Vector2::Zero();
+  a[dof_] = ag;
+  domain.add_ground_accel(dof_, ag);
+  for (auto& [tag, n] : domain.nodes()) {
+    if (n->has_mass) n->load[dof_] -= n->mass[dof_] * ag;
+  }
+  for (auto& [tag, e] : domain.elements()) e->add_inertia_load(a);
+}
+
+}  // namespace fem::domain

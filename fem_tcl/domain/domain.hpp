@@ -1,0 +1,87 @@
+#pragma once
+// The model: nodes, elements, constraints, load patterns, time and the recorders called at each commit
+// (OpenSees Domain, reduced to what a 2D continuum analysis needs).
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fem_tcl/domain/element.hpp"
+#include "fem_tcl/domain/load_pattern.hpp"
+#include "fem_tcl/domain/node.hpp"
+#include "fem_tcl/domain/recorder.hpp"
+
+namespace fem::domain {
+
+/// `equalDOF retained constrained dofs..` (dofs 0-based).
+struct EqualDof { int retained; int constrained; std::vector<int> dofs; };
+
+class Domain {
+ public:
+  // --- building (throw common::InputError naming `where` on a duplicate or missing tag) ---
+  Node& add_node(int tag, double x, double y, const std::string& where);
+  void add_element(std::unique_ptr<Element> element, const std::string& where);
+  void add_pattern(std::unique_ptr<LoadPattern> pattern, const std::string& where);
+  void add_equal_dof(EqualDof c) { equal_dofs_.push_back(std::move(c)); ++version_; }
+  void add_recorder(std::unique_ptr<Recorder> r) { recorders_.push_back(std::move(r)); }
+  bool remove_pattern(int tag);
+  void remove_recorders() { flush_recorders(); recorders_.clear(); }
+  void clear();
+
+  Node* find_node(int tag);
+  const Node* find_node(int tag) const;
+  Node& node(int tag, const std::string& where);
+  Element* find_element(int tag);
+  Element& element(int tag, const std::string& where);
+  LoadPattern* find_pattern(int tag);
+
+  const std::map<int, std::unique_ptr<Node>>& nodes() const { return nodes_; }
+  const std::map<int, std::unique_ptr<Element>>& elements() const { return elements_; }
+  const std::map<int, std::unique_ptr<LoadPattern>>& patterns() const { return patterns_; }
+  const std::vector<EqualDof>& equal_dofs() const { return equal_dofs_; }
+
+  /// Incremented by every change that alters the dof numbering or the sparsity pattern.
+  long version() const { return version_; }
+  void touch() { ++version_; }
+
+  // --- time and loads ---
+  double time() const { return time_; }
+  double committed_time() const { return committed_time_; }
+  void set_time(double t) { time_ = t; }
+  /// `setTime` / `loadConst -time`: sets current and committed time.
+  void set_committed_time(double t) { time_ = committed_time_ = t; }
+  /// Zeroes nodal and element loads, then applies every pattern at `time` (OpenSees Domain::applyLoad).
+  void apply_loads(double time);
+  /// `loadConst`: freezes every pattern at its current factor.
+  void set_load_const();
+  /// Ground acceleration per direction applied at the last apply_loads (sum of UniformExcitations).
+  const Vector2& ground_accel() const { return ground_accel_; }
+  void add_ground_accel(int dof, double a) { ground_accel_[dof] += a; }
+
+  // --- state ---
+  void update_elements();
+  /// Commits nodes and elements, then calls the recorders (OpenSees Domain::commit).
+  void commit();
+  void revert_to_last_commit();
+  void revert_to_start();
+  /// Reactions = -(nodal load) + sum of element resisting forces (quirk 7).
+  void compute_reactions();
+  void record();
+  void flush_recorders();
+  void set_rayleigh(const RayleighFactors& f);
+  const RayleighFactors& rayleigh() const { return rayleigh_; }
+
+ private:
+  std::map<int, std::unique_ptr<Node>> nodes_;
+  std::map<int, std::unique_ptr<Element>> elements_;
+  std::map<int, std::unique_ptr<LoadPattern>> patterns_;
+  std::vector<EqualDof> equal_dofs_;
+  std::vector<std::unique_ptr<Recorder>> recorders_;
+  RayleighFactors rayleigh_;
+  double time_ = 0.0;
+  double committed_time_ = 0.0;
+  Vector2 ground_accel_ = Vector2::Zero();
+  long version_ = 0;
+};
+
+}  // namespace fem::domain

@@ -1,0 +1,115 @@
+#pragma once
+// The 4-node, 2-dof-per-node element protocol (OpenSees Element, in this project's style): trial / commit /
+// revert, tangent, initial stiffness, lumped mass, resisting force, element loads and Rayleigh damping.
+// Dof order (u1x u1y u2x u2y u3x u3y u4x u4y), nodes counter-clockwise.
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "fem_tcl/domain/node.hpp"
+
+namespace fem::domain {
+
+using Vector8 = Eigen::Matrix<double, 8, 1>;
+using Matrix8 = Eigen::Matrix<double, 8, 8>;
+
+/// Rayleigh damping factors: C = alphaM M + betaK K(current) + betaK0 K(initial) + betaKc K(last commit).
+struct RayleighFactors {
+  double alpha_m = 0.0;
+  double beta_k = 0.0;
+  double beta_k0 = 0.0;
+  double beta_kc = 0.0;
+  bool any() const { return alpha_m != 0.0 || beta_k != 0.0 || beta_k0 != 0.0 || beta_kc != 0.0; }
+};
+
+class Element {
+ public:
+  Element(int tag, std::array<Node*, 4> nodes) : tag_(tag), nodes_(nodes) {}
+  virtual ~Element() = default;
+
+  int tag() const { return tag_; }
+  const std::array<Node*, 4>& nodes() const { return nodes_; }
+  virtual std::string type_name() const = 0;
+
+  /// Sets the materials' trial strains from the nodes' trial displacements.
+  virtual void update() = 0;
+  virtual const Matrix8& tangent_stiffness() = 0;
+  virtual const Matrix8& initial_stiffness() = 0;
+  /// Diagonal of the lumped mass matrix.
+  virtual const Vector8& lumped_mass() = 0;
+  /// Internal force minus body forces minus element loads (OpenSees getResistingForce), no inertia/damping.
+  virtual const Vector8& resisting_force() = 0;
+  virtual void commit_state() = 0;
+  virtual void revert_to_last_commit() = 0;
+  virtual void revert_to_start() = 0;
+
+  /// Element loads (Domain::applyLoad zeroes them, then patterns add).
+  virtual void zero_load() { load_.setZero(); self_weight_applied_ = false; applied_body_.setZero(); }
+  /// `eleLoad -type -selfWeight xf yf`: replaces the always-on body force by factor*(xf b1, yf b2).
+  void add_self_weight(double factor, double xf, double yf) {
+    self_weight_applied_ = true;
+    applied_body_[0] += factor * xf * body_force()[0];
+    applied_body_[1] += factor * yf * body_force()[1];
+  }
+  /// Adds -M * (ground acceleration) to the element load vector (UniformExcitation, relative formulation).
+  void add_inertia_load(const Vector2& ground_accel) {
+    const Vector8& m = lumped_mass();
+    for (int i = 0; i < 8; ++i) load_[i] -= m[i] * ground_accel[i % 2];
+  }
+  virtual Vector2 body_force() const = 0;
+
+  /// `rayleigh` command: stores the factors; betaKc takes the tangent of this moment (OpenSees Element).
+  void set_rayleigh(const RayleighFactors& f) {
+    rayleigh_ = f;
+    if (f.beta_kc != 0.0) committed_tangent_ = tangent_stiffness();
+  }
+  const RayleighFactors& rayleigh() const { return rayleigh_; }
+  const Matrix8& committed_tangent() const { return committed_tangent_; }
+  /// Called by commit_state of derived classes: Kc <- converged tangent (quirk 8).
+  void update_committed_tangent() {
+    if (rayleigh_.beta_kc != 0.0) committed_tangent_ = tangent_stiffness();
+  }
+
+  /// Element response by name, e.g. {"stress"}, {"stresses"}, {"forces"}, {"material","3","stress"};
+  /// nullopt when unknown.
+  virtual std::optional<std::vector<double>> response(const std::vector<std::string>& args) = 0;
+  /// `setParameter` forwarded to the materials; false when no material knows `name`.
+  virtual bool set_parameter(std::string_view name, double value) = 0;
+  virtual bool update_material_stage(int stage) = 0;
+  /// Tag of the nDMaterial the element was built from.
+  virtual int material_tag() const = 0;
+  virtual nlohmann::ordered_json to_json() const = 0;
+
+  /// Element displacement vector from the nodes' trial displacements.
+  Vector8 trial_displacement() const {
+    Vector8 u;
+    for (int i = 0; i < 4; ++i) { u[2 * i] = nodes_[i]->disp[0]; u[2 * i + 1] = nodes_[i]->disp[1]; }
+    return u;
+  }
+  Vector8 trial_velocity() const {
+    Vector8 v;
+    for (int i = 0; i < 4; ++i) { v[2 * i] = nodes_[i]->vel[0]; v[2 * i + 1] = nodes_[i]->vel[1]; }
+    return v;
+  }
+
+ protected:
+  bool self_weight_applied() const { return self_weight_applied_; }
+  const Vector2& applied_body() const { return applied_body_; }
+  const Vector8& element_load() const { return load_; }
+
+ private:
+  int tag_;
+  std::array<Node*, 4> nodes_;
+  Vector8 load_ = Vector8::Zero();
+  bool self_weight_applied_ = false;
+  Vector2 applied_body_ = Vector2::Zero();
+  RayleighFactors rayleigh_;
+  Matrix8 committed_tangent_ = Matrix8::Zero();
+};
+
+}  // namespace fem::domain

@@ -1,0 +1,57 @@
+#include "fem_tcl/elements/element_registry.hpp"
+
+#include <array>
+
+#include "fem_tcl/elements/four_node_quad.hpp"
+#include "fem_tcl/elements/ssp_quad.hpp"
+
+namespace fem::elements {
+
+namespace {
+// One line per element type.
+constexpr std::array kParsers{
+    ElementParserEntry{"SSPquad", "element SSPquad tag i j k l matTag PlaneStrain|PlaneStress thick <b1 b2>",
+                       parse_ssp_quad},
+    ElementParserEntry{"quad", "element quad tag i j k l thick PlaneStrain|PlaneStress matTag <p rho b1 b2>",
+                       parse_four_node_quad},
+    ElementParserEntry{"FourNodeQuad",
+                       "element FourNodeQuad tag i j k l thick PlaneStrain|PlaneStress matTag <p rho b1 b2>",
+                       parse_four_node_quad},
+};
+}  // namespace
+
+std::span<const ElementParserEntry> element_parsers() { return kParsers; }
+
+const ElementParserEntry* find_element_parser(std::string_view type) {
+  for (const auto& e : element_parsers()) {
+    if (e.type == type) return &e;
+  }
+  return nullptr;
+}
+
+const materials::NDMaterial& ElementBuildContext::material(common::CommandArgs& args, int tag) const {
+  auto it = materials.find(tag);
+  if (it == materials.end()) args.fail("nDMaterial " + std::to_string(tag) + " does not exist");
+  return *it->second;
+}
+
+std::array<domain::Node*, 4> ElementBuildContext::quad_nodes(common::CommandArgs& args,
+                                                             const std::array<int, 4>& tags) const {
+  std::array<domain::Node*, 4> nodes{};
+  for (int i = 0; i < 4; ++i) {
+    nodes[i] = domain.find_node(tags[i]);
+    if (!nodes[i]) args.fail("node " + std::to_string(tags[i]) + " does not exist");
+    for (int j = 0; j < i; ++j) {
+      if (tags[j] == tags[i]) args.fail("node " + std::to_string(tags[i]) + " appears twice (collapsed element)");
+    }
+  }
+  return nodes;
+}
+
+materials::PlaneType parse_plane_type(common::CommandArgs& args, const std::string& word) {
+  if (word == "PlaneStrain" || word == "PlaneStrain2D") return materials::PlaneType::PlaneStrain;
+  if (word == "PlaneStress" || word == "PlaneStress2D") return materials::PlaneType::PlaneStress;
+  args.fail("expected PlaneStrain or PlaneStress, got '" + word + "'");
+}
+
+}  // namespace fem::elements

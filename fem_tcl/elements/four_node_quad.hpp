@@ -1,0 +1,67 @@
+#pragma once
+// FourNodeQuad (`element quad`): bilinear isoparametric quadrilateral, 2 x 2 Gauss quadrature at
+// +-1/sqrt(3) in the order (-,-), (+,-), (+,+), (-,+), lumped mass (row sums of N rho detJ), as OpenSees 3.8
+// SRC/element/fourNodeQuad/FourNodeQuad.cpp (Zienkiewicz & Taylor, The Finite Element Method vol. 1,
+// 6th ed., ch. 9). The optional block "p rho b1 b2" gives a surface pressure (not supported), an element
+// density that replaces the material's when nonzero (quirk 3), and body forces per unit volume.
+#include <memory>
+
+#include "common/command_args.hpp"
+#include "fem_tcl/domain/domain.hpp"
+#include "fem_tcl/elements/element_registry.hpp"
+#include "fem_tcl/materials/nd_material.hpp"
+
+namespace fem::elements {
+
+using domain::Matrix8;
+using domain::Vector8;
+
+class FourNodeQuad final : public domain::Element {
+ public:
+  /// Throws common::InputError when detJ <= 0 at a Gauss point (collapsed or clockwise nodes).
+  FourNodeQuad(int tag, std::array<domain::Node*, 4> nodes, const materials::NDMaterial& material,
+               materials::PlaneType plane, double thickness, double pressure, double rho, double b1, double b2);
+
+  std::string type_name() const override { return "FourNodeQuad"; }
+  void update() override;
+  const Matrix8& tangent_stiffness() override;
+  const Matrix8& initial_stiffness() override;
+  const Vector8& lumped_mass() override;
+  const Vector8& resisting_force() override;
+  void commit_state() override;
+  void revert_to_last_commit() override;
+  void revert_to_start() override;
+  domain::Vector2 body_force() const override { return body_; }
+
+  std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
+  bool set_parameter(std::string_view name, double value) override;
+  bool update_material_stage(int stage) override;
+  nlohmann::ordered_json to_json() const override;
+  int material_tag() const override { return material_tag_; }
+
+ private:
+  struct GaussPoint {
+    Eigen::Matrix<double, 2, 4> dN;  ///< dN/dx (row 0), dN/dy (row 1)
+    Eigen::Vector4d N;
+    double dvol;  ///< detJ * weight * thickness
+  };
+  Matrix8 stiffness_from(bool initial);
+
+  std::array<std::unique_ptr<materials::NDMaterial>, 4> materials_;
+  std::array<GaussPoint, 4> gp_;
+  int material_tag_;
+  double thickness_;
+  double pressure_;
+  double rho_;
+  domain::Vector2 body_;
+  Matrix8 K_ = Matrix8::Zero();
+  Matrix8 Ki_ = Matrix8::Zero();
+  bool have_Ki_ = false;
+  Vector8 mass_ = Vector8::Zero();
+  Vector8 force_ = Vector8::Zero();
+};
+
+/// `element quad tag i j k l thick PlaneStrain|PlaneStress matTag <p rho b1 b2>` (args start at the tag).
+std::unique_ptr<domain::Element> parse_four_node_quad(common::CommandArgs& args, const ElementBuildContext& ctx);
+
+}  // namespace fem::elements

@@ -1,0 +1,63 @@
+#pragma once
+// SSPquad: stabilized single-point 4-node quadrilateral (McGann, Arduino & Mackenzie-Helnwein 2012,
+// "Stabilized single-point 4-node quadrilateral element for dynamic analysis of fluid saturated porous
+// media", Acta Geotechnica 7(4):297-311), as implemented in OpenSees 3.8 (SRC/element/UWelements/SSPquad.cpp):
+//   K = Kstab + 4 t J0 B0^T C B0,   f_int = Kstab u + 4 t J0 B0^T sigma(B0 u)
+// with B0 the strain-displacement matrix at the element centre and Kstab the hourglass stiffness built
+// once from the material's initial tangent (paper eqs. 28-36). Lumped mass and body-force weights are the
+// nodal Jacobian terms t (J0 + J1 xi_i + J2 eta_i).
+#include <memory>
+
+#include "common/command_args.hpp"
+#include "fem_tcl/domain/domain.hpp"
+#include "fem_tcl/elements/element_registry.hpp"
+#include "fem_tcl/materials/nd_material.hpp"
+
+namespace fem::elements {
+
+using domain::Matrix8;
+using domain::Vector8;
+
+class SSPquad final : public domain::Element {
+ public:
+  /// Throws common::InputError for a collapsed or clockwise element (J0 <= 0).
+  SSPquad(int tag, std::array<domain::Node*, 4> nodes, const materials::NDMaterial& material,
+          materials::PlaneType plane, double thickness, double b1, double b2);
+
+  std::string type_name() const override { return "SSPquad"; }
+  void update() override;
+  const Matrix8& tangent_stiffness() override;
+  const Matrix8& initial_stiffness() override { return tangent_stiffness(); }  // as OpenSees (quirk 8)
+  const Vector8& lumped_mass() override;
+  const Vector8& resisting_force() override;
+  void commit_state() override;
+  void revert_to_last_commit() override { material_->revert_to_last_commit(); }
+  void revert_to_start() override { material_->revert_to_start(); }
+  domain::Vector2 body_force() const override { return body_; }
+
+  std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
+  bool set_parameter(std::string_view name, double value) override { return material_->set_parameter(name, value); }
+  bool update_material_stage(int stage) override { return material_->update_stage(stage); }
+  nlohmann::ordered_json to_json() const override;
+  int material_tag() const override { return material_tag_; }
+  const materials::NDMaterial& material() const { return *material_; }
+
+ private:
+  void compute_stabilization();
+
+  std::unique_ptr<materials::NDMaterial> material_;
+  int material_tag_;
+  double thickness_;
+  domain::Vector2 body_;
+  double J0_ = 0, J1_ = 0, J2_ = 0;
+  Eigen::Matrix<double, 3, 8> B0_ = Eigen::Matrix<double, 3, 8>::Zero();
+  Matrix8 Kstab_ = Matrix8::Zero();
+  Matrix8 K_ = Matrix8::Zero();
+  Vector8 mass_ = Vector8::Zero();
+  Vector8 force_ = Vector8::Zero();
+};
+
+/// `element SSPquad tag i j k l matTag PlaneStrain|PlaneStress thick <b1 b2>` (args start at the tag).
+std::unique_ptr<domain::Element> parse_ssp_quad(common::CommandArgs& args, const ElementBuildContext& ctx);
+
+}  // namespace fem::elements

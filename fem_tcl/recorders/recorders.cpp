@@ -1,0 +1,162 @@
+#include "fem_tcl/recorders/recorders.hpp"
+
+#include <iostream>
+
+namespace fem::recorders {
+
+TextRecorder::TextRecorder(RecorderOptions options) : options_(std::move(options)) {
+  out_.open(options_.path, std::ios::out | std::ios::trunc);
+  if (!out_) throw common::InputError("recorder", "cannot open '" + options_.path + "' for writing");
+  out_.precision(options_.precision);
+  if (options_.close_on_write) out_.close();
+}
+
+TextRecorder::~TextRecorder() {
+  if (out_.is_open()) out_.close();
+}
+
+void TextRecorder::record(double time) {
+  // OpenSees Recorder -dT rule with relative tolerance 1e-5 (NodeRecorder::record).
+  if (options_.delta_t != 0.0) {
+    if (time - next_time_ < -options_.delta_t * 1e-5) return;
+    next_time_ = time + options_.delta_t;
+  }
+  row_.clear();
+  if (options_.time_column) row_.push_back(time);
+  const std::size_t before = row_.size();
+  collect(row_);
+  if (row_.size() == before) return;  // nothing to write (e.g. a Node recorder without -dof)
+  if (options_.close_on_write) {
+    out_.open(options_.path, std::ios::out | std::ios::app);
+    out_.precision(options_.precision);
+  }
+  out_ << row_[0];
+  for (std::size_t i = 1; i < row_.size(); ++i) out_ << ' ' << row_[i];
+  out_ << '\n';
+  if (options_.close_on_write) out_.close();
+}
+
+void TextRecorder::flush() {
+  if (out_.is_open()) out_.flush();
+}
+
+NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<domain::Node*> nodes,
+                           std::vector<int> dofs, NodeResponse response)
+    : TextRecorder(std::move(options)), domain_(domain), nodes_(std::move(nodes)), dofs_(std::move(dofs)),
+      response_(response) {}
+
+void NodeRecorder::collect(std::vector<double>& row) {
+  if (dofs_.empty()) return;
+  if (response_ == NodeResponse::Reaction) domain_.compute_reactions();
+  for (const domain::Node* n : nodes_) {
+    const domain::Vector2* v = nullptr;
+    switch (response_) {
+      case NodeResponse::Disp: v = &n->disp; break;
+      case NodeResponse::Vel: v = &n->vel; break;
+      case NodeResponse::Accel: v = &n->accel; break;
+      case NodeResponse::IncrDisp: v = &n->incr_disp; break;
+      case NodeResponse::Reaction: v = &n->reaction; break;
+    }
+    for (int d : dofs_) row.push_back((*v)[d]);
+  }
+}
+
+ElementRecorder::ElementRecorder(RecorderOptions options, std::vector<domain::Element*> elements,
+                                 std::vector<std::string> response)
+    : TextRecorder(std::move(options)), elements_(std::move(elements)), response_(std::move(response)) {}
+
+void ElementRecorder::collect(std::vector<double>& row) {
+  for (domain::Element* e : elements_) {
+    if (auto values = e->response(response_)) row.insert(row.end(), values->begin(), values->end());
+  }
+}
+
+namespace {
+
+std::vector<int> read_integers(common::CommandArgs& args) {
+  std::vector<int> out;
+  while (auto v = args.optional_integer()) out.push_back(*v);
+  return out;
+}
+
+}  // namespace
+
+std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain) {
+  const std::string type = args.word("type (Node or Element)");
+  if (type != "Node" && type != "Element") args.fail("unknown recorder type '" + type + "' (Node or Element)");
+  const bool is_node = type == "Node";
+  RecorderOptions opt;
+  std::vector<int> tags, dofs;
+  bool have_dof = false, have_file = false;
+  std::vector<std::string> response;
+  while (!args.empty()) {
+    if (args.flag("-file")) { opt.path = args.word("-file name"); have_file = true; }
+    else if (args.flag("-time")) opt.time_column = true;
+    else if (args.flag("-dT")) {
+      opt.delta_t = args.number("-dT value");
+      if (opt.delta_t < 0.0) args.fail("expected -dT >= 0");
+    } else if (args.flag("-precision")) {
+      opt.precision = args.integer("-precision value");
+      if (opt.precision < 1 || opt.precision > 17) args.fail("expected 1 <= -precision <= 17");
+    } else if (args.flag("-closeOnWrite")) opt.close_on_write = true;
+    else if (is_node && args.flag("-node")) {
+      auto t = read_integers(args);
+      if (t.empty()) args.fail("missing node tags after -node");
+      tags.insert(tags.end(), t.begin(), t.end());
+    } else if (is_node && args.flag("-nodeRange")) {
+      const int a = args.integer("-nodeRange start"), b = args.integer("-nodeRange end");
+      for (const auto& [tag, n] : domain.nodes()) if (tag >= a && tag <= b) tags.push_back(tag);
+    } else if (is_node && args.flag("-dof")) {
+      have_dof = true;
+      for (int d : read_integers(args)) {
+        if (d < 1 || d > 2) args.fail("expected -dof values 1 or 2, got " + std::to_string(d));
+        dofs.push_back(d - 1);
+      }
+    } else if (!is_node && args.flag("-ele")) {
+      auto t = read_integers(args);
+      if (t.empty()) args.fail("missing element tags after -ele");
+      tags.insert(tags.end(), t.begin(), t.end());
+    } else if (!is_node && args.flag("-eleRange")) {
+      const int a = args.integer("-eleRange start"), b = args.integer("-eleRange end");
+      for (const auto& [tag, e] : domain.elements()) if (tag >= a && tag <= b) tags.push_back(tag);
+    } else if (!args.peek().empty() && args.peek()[0] == '-' && !common::CommandArgs::parse_number(args.peek())) {
+      args.fail("unknown option '" + args.peek() + "'");
+    } else {
+      // the first word that is not an option starts the response
+      while (!args.empty()) response.push_back(args.word("response"));
+    }
+  }
+  if (!have_file) args.fail("missing -file name (only file output is supported)");
+  if (response.empty()) args.fail("missing response (e.g. disp, reaction, stress)");
+  if (is_node) {
+    NodeResponse r{};
+    const std::string& w = response[0];
+    if (w == "disp") r = NodeResponse::Disp;
+    else if (w == "vel") r = NodeResponse::Vel;
+    else if (w == "accel") r = NodeResponse::Accel;
+    else if (w == "incrDisp") r = NodeResponse::IncrDisp;
+    else if (w == "reaction") r = NodeResponse::Reaction;
+    else args.fail("unknown node response '" + w + "' (disp, vel, accel, incrDisp or reaction)");
+    if (response.size() > 1) args.fail("unexpected argument '" + response[1] + "' after the response");
+    std::vector<domain::Node*> nodes;
+    for (int t : tags) nodes.push_back(&domain.node(t, args.command()));
+    if (!have_dof) {
+      std::cerr << "WARNING recorder Node -file " << opt.path
+                << ": no -dof given, so nothing will be written (as OpenSees); add e.g. -dof 1 2\n";
+    }
+    return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r);
+  }
+  std::vector<domain::Element*> elements;
+  for (int t : tags) {
+    domain::Element& e = domain.element(t, args.command());
+    if (!e.response(response)) {
+      std::string joined;
+      for (const auto& w : response) joined += (joined.empty() ? "" : " ") + w;
+      args.fail("element " + std::to_string(t) + " (" + e.type_name() + ") has no response '" + joined + "'");
+    }
+    elements.push_back(&e);
+  }
+  return std::make_unique<ElementRecorder>(opt, std::move(elements), std::move(response));
+}
+
+}  // namespace fem::recorders

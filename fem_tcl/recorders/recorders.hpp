@@ -1,0 +1,74 @@
+#pragma once
+// Text recorders in OpenSees' format (FORMATS.md section 2): one row per committed step, values separated
+// by single spaces, default C++ stream formatting at `-precision` significant digits (6 by default),
+// optional leading time column, `-dT` rows on OpenSees' absolute "next time" rule (quirk 6).
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/command_args.hpp"
+#include "fem_tcl/domain/domain.hpp"
+
+namespace fem::recorders {
+
+struct RecorderOptions {
+  std::string path;
+  bool time_column = false;
+  double delta_t = 0.0;
+  int precision = 6;
+  bool close_on_write = false;
+};
+
+/// A row-per-commit text file with the -dT rule and -closeOnWrite.
+class TextRecorder : public domain::Recorder {
+ public:
+  explicit TextRecorder(RecorderOptions options);
+  ~TextRecorder() override;
+  void record(double time) final;
+  void flush() override;
+
+ protected:
+  /// Appends the row's values (without the time column).
+  virtual void collect(std::vector<double>& row) = 0;
+
+ private:
+  RecorderOptions options_;
+  std::ofstream out_;
+  double next_time_ = 0.0;
+  std::vector<double> row_;
+};
+
+enum class NodeResponse { Disp, Vel, Accel, IncrDisp, Reaction };
+
+class NodeRecorder final : public TextRecorder {
+ public:
+  NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<domain::Node*> nodes,
+               std::vector<int> dofs, NodeResponse response);
+
+ protected:
+  void collect(std::vector<double>& row) override;
+
+ private:
+  domain::Domain& domain_;
+  std::vector<domain::Node*> nodes_;
+  std::vector<int> dofs_;  ///< 0-based
+  NodeResponse response_;
+};
+
+class ElementRecorder final : public TextRecorder {
+ public:
+  ElementRecorder(RecorderOptions options, std::vector<domain::Element*> elements, std::vector<std::string> response);
+
+ protected:
+  void collect(std::vector<double>& row) override;
+
+ private:
+  std::vector<domain::Element*> elements_;
+  std::vector<std::string> response_;
+};
+
+/// `recorder Node|Element ...` (args start at the type word). Throws common::InputError.
+std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain);
+
+}  // namespace fem::recorders

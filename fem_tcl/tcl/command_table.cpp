@@ -1,0 +1,60 @@
+#include <array>
+
+#include "fem_tcl/tcl/commands.hpp"
+
+namespace fem::tcl {
+
+namespace {
+constexpr std::array kCommands{
+    CommandEntry{"model", "model basic -ndm 2 <-ndf 2>", 0, cmd_model},
+    CommandEntry{"node", "node tag x y <-mass m1 m2>", 1, cmd_node},
+    CommandEntry{"fix", "fix nodeTag f1 f2", 1, cmd_fix},
+    CommandEntry{"fixX", "fixX x f1 f2 <-tol tol>", 1, cmd_fix_x},
+    CommandEntry{"fixY", "fixY y f1 f2 <-tol tol>", 1, cmd_fix_y},
+    CommandEntry{"equalDOF", "equalDOF retainedNode constrainedNode dof1 <dof2>", 2, cmd_equal_dof},
+    CommandEntry{"mass", "mass nodeTag m1 m2", 1, cmd_mass},
+    CommandEntry{"nDMaterial", "nDMaterial type tag ...", 2, cmd_nd_material},
+    CommandEntry{"element", "element type tag ...", 2, cmd_element},
+    CommandEntry{"timeSeries", "timeSeries Constant|Linear|Path tag <options>", 2, cmd_time_series},
+    CommandEntry{"pattern", "pattern Plain tag tsTag <-fact f> {body} | pattern UniformExcitation tag dir -accel tsTag <-fact f>", 2, cmd_pattern},
+    CommandEntry{"load", "load nodeTag F1 F2", 1, cmd_load},
+    CommandEntry{"sp", "sp nodeTag dof value", 1, cmd_sp},
+    CommandEntry{"eleLoad", "eleLoad -ele t.. | -range a b -type -selfWeight xf yf", 0, cmd_ele_load},
+    CommandEntry{"rayleigh", "rayleigh alphaM betaK betaK0 betaKc", 0, cmd_rayleigh},
+    CommandEntry{"setParameter", "setParameter -val v <-ele t.. | -eleRange a b> name", 0, cmd_set_parameter},
+    CommandEntry{"updateMaterialStage", "updateMaterialStage -material tag -stage s", 0, cmd_update_material_stage},
+    CommandEntry{"constraints", "constraints Plain|Transformation|Penalty <alphaS alphaM>", 0, cmd_constraints},
+    CommandEntry{"numberer", "numberer Plain|RCM|AMD", 0, cmd_numberer},
+    CommandEntry{"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM", 0, cmd_system},
+    CommandEntry{"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter <printFlag>", 0, cmd_test},
+    CommandEntry{"algorithm", "algorithm Linear|Newton|ModifiedNewton|KrylovNewton|NewtonLineSearch", 0, cmd_algorithm},
+    CommandEntry{"integrator", "integrator LoadControl dLambda | Newmark gamma beta | HHT alpha <gamma beta> | CentralDifference", 0, cmd_integrator},
+    CommandEntry{"analysis", "analysis Static|Transient", 0, cmd_analysis},
+    CommandEntry{"analyze", "analyze numSteps <dt>", 0, cmd_analyze},
+    CommandEntry{"loadConst", "loadConst <-time t>", 0, cmd_load_const},
+    CommandEntry{"setTime", "setTime t", 0, cmd_set_time},
+    CommandEntry{"getTime", "getTime <format>", 0, cmd_get_time},
+    CommandEntry{"wipe", "wipe", 0, cmd_wipe},
+    CommandEntry{"wipeAnalysis", "wipeAnalysis", 0, cmd_wipe_analysis},
+    CommandEntry{"reset", "reset", 0, cmd_reset},
+    CommandEntry{"remove", "remove recorders | recorder tag | loadPattern tag", 1, cmd_remove},
+    CommandEntry{"nodeDisp", "nodeDisp nodeTag <dof>", 1, cmd_node_disp},
+    CommandEntry{"nodeVel", "nodeVel nodeTag <dof>", 1, cmd_node_vel},
+    CommandEntry{"nodeAccel", "nodeAccel nodeTag <dof>", 1, cmd_node_accel},
+    CommandEntry{"nodeCoord", "nodeCoord nodeTag <dim>", 1, cmd_node_coord},
+    CommandEntry{"eleResponse", "eleResponse eleTag response..", 1, cmd_ele_response},
+    CommandEntry{"getNodeTags", "getNodeTags", 0, cmd_get_node_tags},
+    CommandEntry{"getEleTags", "getEleTags", 0, cmd_get_ele_tags},
+    CommandEntry{"eleNodes", "eleNodes eleTag", 1, cmd_ele_nodes},
+    CommandEntry{"reactions", "reactions", 0, cmd_reactions},
+    CommandEntry{"nodeReaction", "nodeReaction nodeTag <dof>", 1, cmd_node_reaction},
+    CommandEntry{"getLoadFactor", "getLoadFactor patternTag", 1, cmd_get_load_factor},
+    CommandEntry{"record", "record", 0, cmd_record},
+    CommandEntry{"recorder", "recorder Node|Element -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b -dof d.. | -ele e.. | -eleRange a b) response..", 1, cmd_recorder},
+    CommandEntry{"print", "print -JSON <-file f>", 0, cmd_print},
+};
+}  // namespace
+
+std::span<const CommandEntry> command_table() { return kCommands; }
+
+}  // namespace fem::tcl

@@ -1,0 +1,49 @@
+#pragma once
+// The state the Tcl commands act on: the model (Domain), the named objects the model builder keeps
+// (materials, time series), the analysis chain as the user set it, and the current load pattern.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "fem_tcl/analysis/analysis.hpp"
+#include "fem_tcl/domain/domain.hpp"
+#include "fem_tcl/domain/time_series.hpp"
+#include "fem_tcl/materials/nd_material.hpp"
+
+struct Tcl_Interp;
+
+namespace fem::tcl {
+
+/// Thrown by a command whose nested Tcl script failed: the Tcl result and errorInfo are already set.
+struct TclScriptError {};
+
+struct AnalysisChain {
+  std::optional<analysis::HandlerType> handler;
+  std::optional<std::string> numberer;
+  std::optional<std::string> system;
+  std::optional<analysis::TestConfig> test;
+  std::optional<analysis::AlgorithmConfig> algorithm;
+  std::optional<analysis::IntegratorConfig> integrator;
+  std::optional<bool> transient;  ///< set by `analysis Static|Transient`
+};
+
+struct Context {
+  Tcl_Interp* interp = nullptr;
+  bool model_defined = false;
+  domain::Domain domain;
+  std::map<int, std::unique_ptr<materials::NDMaterial>> materials;
+  std::map<int, std::shared_ptr<domain::TimeSeries>> time_series;
+  AnalysisChain chain;
+  std::unique_ptr<analysis::Analysis> analysis;  ///< rebuilt when the chain changes
+  bool analysis_dirty = true;
+  domain::LoadPattern* current_pattern = nullptr;  ///< inside `pattern Plain ... {body}`
+
+  /// Evaluates `script` in the interpreter; throws TclScriptError when it fails.
+  void eval(const std::string& script);
+  /// wipe: the model, materials, analysis and recorders (time series are kept, FORMATS.md section 1).
+  void wipe();
+  void wipe_analysis();
+};
+
+}  // namespace fem::tcl

@@ -1,0 +1,167 @@
+#include "fem_tcl/tcl/interpreter.hpp"
+
+#include <tcl.h>
+
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+#include "fem_tcl/tcl/commands.hpp"
+
+namespace fem::tcl {
+
+void Context::eval(const std::string& script) {
+  if (Tcl_EvalEx(interp, script.c_str(), static_cast<int>(script.size()), 0) != TCL_OK) throw TclScriptError{};
+}
+
+void Context::wipe() {
+  wipe_analysis();
+  domain.clear();
+  materials.clear();
+  current_pattern = nullptr;
+}
+
+void Context::wipe_analysis() {
+  analysis.reset();
+  chain = AnalysisChain{};
+  analysis_dirty = true;
+}
+
+struct Interpreter::Binding {
+  Context* context;
+  const CommandEntry* entry;
+};
+
+namespace {
+
+/// The one boundary where C++ exceptions become TCL_ERROR.
+int dispatch(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[]) {
+  const auto* binding = static_cast<const Interpreter::Binding*>(static_cast<void*>(data));
+  const CommandEntry& entry = *binding->entry;
+  std::vector<std::string> words;
+  words.reserve(static_cast<std::size_t>(objc));
+  for (int i = 1; i < objc; ++i) words.emplace_back(Tcl_GetString(objv[i]));
+  std::string name(entry.name);
+  for (int i = 0; i < entry.name_words && i < static_cast<int>(words.size()); ++i) name += " " + words[i];
+  try {
+    common::CommandArgs args(name, std::string(entry.usage), std::move(words));
+    const std::string result = entry.run(*binding->context, args);
+    Tcl_SetObjResult(interp, Tcl_NewStringObj(result.c_str(), static_cast<int>(result.size())));
+    return TCL_OK;
+  } catch (const TclScriptError&) {
+    return TCL_ERROR;  // a nested script failed; its message and errorInfo are in place
+  } catch (const std::exception& e) {
+    Tcl_SetObjResult(interp, Tcl_NewStringObj(e.what(), -1));
+    return TCL_ERROR;
+  }
+}
+
+void flush_on_exit(ClientData data) {
+  static_cast<Context*>(static_cast<void*>(data))->domain.flush_recorders();
+}
+
+// OpenSees sends `puts` without a channel to stderr (quirk 10).
+constexpr const char* kPutsScript = R"tcl(
+rename puts ::tcl::builtin_puts
+proc puts {args} {
+  set n [llength $args]
+  if {$n == 1} { return [::tcl::builtin_puts stderr [lindex $args 0]] }
+  if {$n == 2 && [lindex $args 0] eq "-nonewline"} { return [::tcl::builtin_puts -nonewline stderr [lindex $args 1]] }
+  return [uplevel 1 [list ::tcl::builtin_puts {*}$args]]
+}
+)tcl";
+
+}  // namespace
+
+Interpreter::Interpreter() : context_(std::make_unique<Context>()) {
+  Tcl_FindExecutable(nullptr);
+  Tcl_Interp* interp = Tcl_CreateInterp();
+  context_->interp = interp;
+  Tcl_Init(interp);  // a missing init.tcl only disables `unknown`/auto-loading, not the core commands
+  for (const CommandEntry& entry : command_table()) {
+    bindings_.push_back(std::make_unique<Binding>(Binding{context_.get(), &entry}));
+    Tcl_CreateObjCommand(interp, std::string(entry.name).c_str(), dispatch,
+                         static_cast<ClientData>(static_cast<void*>(bindings_.back().get())), nullptr);
+  }
+  Tcl_Eval(interp, kPutsScript);
+  Tcl_CreateExitHandler(flush_on_exit, static_cast<ClientData>(static_cast<void*>(context_.get())));
+}
+
+Interpreter::~Interpreter() {
+  Tcl_DeleteExitHandler(flush_on_exit, static_cast<ClientData>(static_cast<void*>(context_.get())));
+  context_->domain.flush_recorders();
+  Tcl_DeleteInterp(context_->interp);
+}
+
+void Interpreter::set_arguments(const std::string& argv0, const std::vector<std::string>& args) {
+  Tcl_Interp* interp = context_->interp;
+  Tcl_Obj* list = Tcl_NewListObj(0, nullptr);
+  for (const auto& a : args) Tcl_ListObjAppendElement(interp, list, Tcl_NewStringObj(a.c_str(), -1));
+  Tcl_SetVar2Ex(interp, "argv", nullptr, list, TCL_GLOBAL_ONLY);
+  Tcl_SetVar2Ex(interp, "argc", nullptr, Tcl_NewIntObj(static_cast<int>(args.size())), TCL_GLOBAL_ONLY);
+  Tcl_SetVar2Ex(interp, "argv0", nullptr, Tcl_NewStringObj(argv0.c_str(), -1), TCL_GLOBAL_ONLY);
+}
+
+namespace {
+std::string error_message(Tcl_Interp* interp, const std::string& name) {
+  Tcl_Obj* options = Tcl_GetReturnOptions(interp, TCL_ERROR);
+  Tcl_IncrRefCount(options);
+  Tcl_Obj* key = Tcl_NewStringObj("-errorline", -1);
+  Tcl_IncrRefCount(key);
+  Tcl_Obj* line_obj = nullptr;
+  int line = 0;
+  if (Tcl_DictObjGet(interp, options, key, &line_obj) == TCL_OK && line_obj) Tcl_GetIntFromObj(interp, line_obj, &line);
+  Tcl_DecrRefCount(key);
+  Tcl_DecrRefCount(options);
+  std::string message = Tcl_GetStringResult(interp);
+  return name + ":" + std::to_string(line) + ": " + message;
+}
+}  // namespace
+
+bool Interpreter::eval_file(const std::string& path, std::string& message) {
+  Tcl_Interp* interp = context_->interp;
+  Tcl_SetVar2Ex(interp, "argv0", nullptr, Tcl_NewStringObj(path.c_str(), -1), TCL_GLOBAL_ONLY);
+  if (Tcl_EvalFile(interp, path.c_str()) == TCL_OK) return true;
+  message = error_message(interp, path);
+  return false;
+}
+
+bool Interpreter::eval_script(const std::string& script, const std::string& name, std::string& message) {
+  Tcl_Interp* interp = context_->interp;
+  if (Tcl_EvalEx(interp, script.c_str(), static_cast<int>(script.size()), TCL_EVAL_GLOBAL) == TCL_OK) return true;
+  message = error_message(interp, name);
+  return false;
+}
+
+int run_main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << "usage: fem_tcl [script.tcl [args..]]\n"
+                 "  Runs an OpenSees-compatible Tcl script (2D solids: SSPquad, quad; ElasticIsotropic and the\n"
+                 "  registered nDMaterials; static and transient analyses; Node/Element recorders).\n"
+                 "  With no script, the commands are read from standard input.\n"
+                 "  The script's arguments are in $argv ($argc of them); $argv0 is the script's path.\n"
+                 "  An uncaught error prints 'file:line: message' on stderr and exits with status 1.\n";
+    return 0;
+  }
+  Interpreter interpreter;
+  std::string message;
+  bool ok = false;
+  if (args.empty()) {
+    interpreter.set_arguments(argv[0], {});
+    std::string script((std::istreambuf_iterator<char>(std::cin)), std::istreambuf_iterator<char>());
+    ok = interpreter.eval_script(script, "stdin", message);
+  } else {
+    interpreter.set_arguments(args[0], std::vector<std::string>(args.begin() + 1, args.end()));
+    ok = interpreter.eval_file(args[0], message);
+  }
+  std::cout.flush();
+  interpreter.context().domain.flush_recorders();
+  if (!ok) {
+    std::cerr << message << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace fem::tcl

@@ -1,0 +1,369 @@
+// Model-building commands: model, node, fix*, equalDOF, mass, nDMaterial, element, timeSeries, pattern,
+// load, sp, eleLoad, rayleigh, setParameter, updateMaterialStage.
+#include <cmath>
+#include <iostream>
+
+#include "fem_tcl/elements/element_registry.hpp"
+#include "fem_tcl/materials/material_registry.hpp"
+#include "fem_tcl/tcl/commands.hpp"
+
+namespace fem::tcl {
+
+namespace {
+
+void require_model(const Context& ctx, common::CommandArgs& args) {
+  if (!ctx.model_defined) args.fail("no model defined; start the script with 'model basic -ndm 2 -ndf 2'");
+}
+
+std::vector<std::string> remaining_words(common::CommandArgs& args) {
+  std::vector<std::string> words;
+  while (!args.empty()) words.push_back(args.word("argument"));
+  return words;
+}
+
+domain::LoadPattern& current_pattern(Context& ctx, common::CommandArgs& args) {
+  if (!ctx.current_pattern) args.fail("only allowed inside the body of 'pattern Plain tag tsTag {...}'");
+  return *ctx.current_pattern;
+}
+
+int fix_flag(common::CommandArgs& args, std::string_view what) {
+  const int f = args.integer(what);
+  if (f != 0 && f != 1) args.fail("expected " + std::string(what) + " to be 0 or 1, got " + std::to_string(f));
+  return f;
+}
+
+std::string_view material_usage(std::string_view type) {
+  if (type == "ElasticIsotropic") return "nDMaterial ElasticIsotropic tag E nu <rho>";
+  if (type == "DruckerPrager") {
+    return "nDMaterial DruckerPrager tag K G sigma_y rho rho_bar Kinf Ko delta1 delta2 H theta <density> <atm>";
+  }
+  return "nDMaterial <type> tag ...";
+}
+
+}  // namespace
+
+std::string cmd_model(Context& ctx, common::CommandArgs& args) {
+  const std::string builder = args.word("builder (basic)");
+  if (builder != "basic" && builder != "Basic" && builder != "BasicBuilder") {
+    args.fail("unknown model builder '" + builder + "' (basic)");
+  }
+  int ndm = 0, ndf = 0;
+  while (!args.empty()) {
+    if (args.flag("-ndm")) ndm = args.integer("-ndm value");
+    else if (args.flag("-ndf")) ndf = args.integer("-ndf value");
+    else args.fail("unknown option '" + args.peek() + "'");
+  }
+  if (ndm != 2) args.fail("fem_tcl builds 2D models only: expected -ndm 2");
+  if (ndf == 0) ndf = 3;  // OpenSees' default for ndm = 2
+  if (ndf != 2) args.fail("fem_tcl's elements are 2D solids: expected -ndf 2 (OpenSees' default for -ndm 2 is 3)");
+  ctx.wipe();
+  ctx.time_series.clear();  // re-issuing `model` clears the time series too (FORMATS.md section 1)
+  ctx.model_defined = true;
+  return {};
+}
+
+std::string cmd_node(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  const int tag = args.integer("tag");
+  const double x = args.number("x");
+  const double y = args.number("y");
+  domain::Vector2 mass = domain::Vector2::Zero();
+  bool has_mass = false;
+  while (!args.empty()) {
+    if (args.flag("-mass")) {
+      mass[0] = args.number("m1");
+      mass[1] = args.number("m2");
+      has_mass = true;
+    } else {
+      args.fail("unexpected argument '" + args.peek() + "'");
+    }
+  }
+  domain::Node& n = ctx.domain.add_node(tag, x, y, args.command());
+  n.mass = mass;
+  n.has_mass = has_mass;
+  return {};
+}
+
+std::string cmd_fix(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  const int tag = args.integer("nodeTag");
+  const int f1 = fix_flag(args, "f1"), f2 = fix_flag(args, "f2");
+  args.expect_end();
+  domain::Node& n = ctx.domain.node(tag, args.command());
+  if ((f1 && n.fixed[0]) || (f2 && n.fixed[1])) {
+    std::cerr << "WARNING fix " << tag << ": a dof is already fixed; the constraint is kept once\n";
+  }
+  n.fixed[0] = n.fixed[0] || f1;
+  n.fixed[1] = n.fixed[1] || f2;
+  ctx.domain.touch();
+  return {};
+}
+
+namespace {
+std::string fix_line(Context& ctx, common::CommandArgs& args, int axis) {
+  require_model(ctx, args);
+  const double coord = args.number(axis == 0 ? "x" : "y");
+  const int f1 = fix_flag(args, "f1"), f2 = fix_flag(args, "f2");
+  double tol = 1e-10;
+  if (args.flag("-tol")) tol = args.number("-tol value");
+  args.expect_end();
+  // OpenSees fixX/fixY skip dofs that are already fixed (no duplicate constraint).
+  for (const auto& [tag, n] : ctx.domain.nodes()) {
+    if (std::abs(n->crd[axis] - coord) <= tol) {
+      n->fixed[0] = n->fixed[0] || f1;
+      n->fixed[1] = n->fixed[1] || f2;
+    }
+  }
+  ctx.domain.touch();
+  return {};
+}
+}  // namespace
+
+std::string cmd_fix_x(Context& ctx, common::CommandArgs& args) { return fix_line(ctx, args, 0); }
+std::string cmd_fix_y(Context& ctx, common::CommandArgs& args) { return fix_line(ctx, args, 1); }
+
+std::string cmd_equal_dof(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  domain::EqualDof c;
+  c.retained = args.integer("retainedNode");
+  c.constrained = args.integer("constrainedNode");
+  if (c.retained == c.constrained) args.fail("retained and constrained node are the same");
+  ctx.domain.node(c.retained, args.command());
+  ctx.domain.node(c.constrained, args.command());
+  while (!args.empty()) {
+    const int d = args.integer("dof");
+    if (d < 1 || d > 2) args.fail("expected dof 1 or 2, got " + std::to_string(d));
+    c.dofs.push_back(d - 1);
+  }
+  if (c.dofs.empty()) args.fail("missing dof");
+  ctx.domain.add_equal_dof(std::move(c));
+  return {};
+}
+
+std::string cmd_mass(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  const int tag = args.integer("nodeTag");
+  const double m1 = args.number("m1"), m2 = args.number("m2");
+  args.expect_end();
+  domain::Node& n = ctx.domain.node(tag, args.command());
+  n.mass = domain::Vector2(m1, m2);
+  n.has_mass = true;
+  return {};
+}
+
+std::string cmd_nd_material(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  const std::string type = args.word("type");
+  const auto parse = materials::find_nd_material_parser(type);
+  if (!parse) {
+    std::string known;
+    for (const auto& e : materials::nd_material_parsers()) known += (known.empty() ? "" : ", ") + std::string(e.type);
+    args.fail("unknown material type '" + type + "' (known: " + known + ")");
+  }
+  const std::vector<std::string> words = remaining_words(args);
+  common::CommandArgs sub("nDMaterial " + type + (words.empty() ? "" : " " + words[0]),
+                          std::string(material_usage(type)), words);
+  std::unique_ptr<materials::NDMaterial> material = parse(sub);
+  const int tag = material->tag();
+  if (ctx.materials.count(tag)) sub.fail("nDMaterial " + std::to_string(tag) + " already exists");
+  ctx.materials.emplace(tag, std::move(material));
+  return {};
+}
+
+std::string cmd_element(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  const std::string type = args.word("type");
+  const elements::ElementParserEntry* entry = elements::find_element_parser(type);
+  if (!entry) {
+    std::string known;
+    for (const auto& e : elements::element_parsers()) known += (known.empty() ? "" : ", ") + std::string(e.type);
+    args.fail("unknown element type '" + type + "' (known: " + known + ")");
+  }
+  const std::vector<std::string> words = remaining_words(args);
+  common::CommandArgs sub("element " + type + (words.empty() ? "" : " " + words[0]), std::string(entry->usage), words);
+  elements::ElementBuildContext build{ctx.domain, ctx.materials};
+  std::unique_ptr<domain::Element> element;
+  try {
+    element = entry->parse(sub, build);
+  } catch (const common::InputError& e) {
+    // constructor errors (geometry) get the usage line too
+    const std::string what = e.what();
+    if (what.find("usage:") != std::string::npos) throw;
+    throw common::InputError(what + "; usage: " + std::string(entry->usage));
+  }
+  if (ctx.domain.find_element(element->tag())) sub.fail("element " + std::to_string(element->tag()) + " already exists");
+  ctx.domain.add_element(std::move(element), sub.command());
+  return {};
+}
+
+std::string cmd_time_series(Context& ctx, common::CommandArgs& args) {
+  auto series = domain::parse_time_series(args);
+  // OpenSees replaces a series with the same tag silently in some versions; an error is clearer.
+  if (ctx.time_series.count(series->tag())) args.fail("timeSeries " + std::to_string(series->tag()) + " already exists");
+  ctx.time_series.emplace(series->tag(), std::move(series));
+  return {};
+}
+
+std::string cmd_pattern(Context& ctx, common::CommandArgs& args) {
+  require_model(ctx, args);
+  const std::string type = args.word("type (Plain or UniformExcitation)");
+  const auto series_for = [&](int tag) {
+    auto it = ctx.time_series.find(tag);
+    if (it == ctx.time_series.end()) args.fail("timeSeries " + std::to_string(tag) + " does not exist");
+    return it->second;
+  };
+  if (type == "Plain") {
+    const int tag = args.integer("tag");
+    const int ts = args.integer("tsTag");
+    double fact = 1.0;
+    if (args.flag("-fact") || args.flag("-factor")) fact = args.number("-fact value");
+    const std::string body = args.word("body {...}");
+    args.expect_end();
+    auto pattern = std::make_unique<domain::PlainPattern>(tag, series_for(ts), fact);
+    domain::LoadPattern* raw = pattern.get();
+    ctx.domain.add_pattern(std::move(pattern), args.command());
+    struct Restore {
+      Context& c;
+      domain::LoadPattern* previous;
+      ~Restore() { c.current_pattern = previous; }
+    } restore{ctx, ctx.current_pattern};
+    ctx.current_pattern = raw;
+    ctx.eval(body);
+    return {};
+  }
+  if (type == "UniformExcitation") {
+    const int tag = args.integer("tag");
+    const int dir = args.integer("dir");
+    if (dir < 1 || dir > 2) args.fail("expected dir 1 or 2, got " + std::to_string(dir));
+    int ts = -1;
+    double fact = 1.0;
+    while (!args.empty()) {
+      if (args.flag("-accel")) ts = args.integer("-accel tsTag");
+      else if (args.flag("-fact") || args.flag("-factor")) fact = args.number("-fact value");
+      else if (args.flag("-vel0")) {
+        if (args.number("-vel0 value") != 0.0) args.fail("-vel0 other than 0 is not supported");
+      } else args.fail("unknown option '" + args.peek() + "'");
+    }
+    if (ts < 0) args.fail("missing -accel tsTag");
+    ctx.domain.add_pattern(std::make_unique<domain::UniformExcitation>(tag, dir - 1, series_for(ts), fact),
+                           args.command());
+    return {};
+  }
+  args.fail("unknown pattern type '" + type + "' (Plain or UniformExcitation)");
+}
+
+std::string cmd_load(Context& ctx, common::CommandArgs& args) {
+  domain::LoadPattern& p = current_pattern(ctx, args);
+  const int tag = args.integer("nodeTag");
+  const double f1 = args.number("F1"), f2 = args.number("F2");
+  args.expect_end();
+  ctx.domain.node(tag, args.command());
+  p.nodal_loads.push_back({tag, f1, f2});
+  return {};
+}
+
+std::string cmd_sp(Context& ctx, common::CommandArgs& args) {
+  domain::LoadPattern& p = current_pattern(ctx, args);
+  const int tag = args.integer("nodeTag");
+  const int dof = args.integer("dof");
+  const double value = args.number("value");
+  args.expect_end();
+  if (dof < 1 || dof > 2) args.fail("expected dof 1 or 2, got " + std::to_string(dof));
+  const domain::Node& n = ctx.domain.node(tag, args.command());
+  if (n.fixed[dof - 1]) args.fail("node " + std::to_string(tag) + " dof " + std::to_string(dof) + " is already fixed");
+  p.prescribed.push_back({tag, dof - 1, value});
+  ctx.domain.touch();
+  return {};
+}
+
+std::string cmd_ele_load(Context& ctx, common::CommandArgs& args) {
+  domain::LoadPattern& p = current_pattern(ctx, args);
+  domain::SelfWeightLoad load{{}, 1.0, 1.0};
+  bool have_type = false;
+  while (!args.empty()) {
+    if (args.flag("-ele")) {
+      while (auto t = args.optional_integer()) load.elements.push_back(*t);
+    } else if (args.flag("-range")) {
+      const int a = args.integer("-range start"), b = args.integer("-range end");
+      for (const auto& [tag, e] : ctx.domain.elements()) if (tag >= a && tag <= b) load.elements.push_back(tag);
+    } else if (args.flag("-type")) {
+      const std::string t = args.word("load type");
+      if (t != "-selfWeight") args.fail("only -type -selfWeight is supported for 2D solids, got '" + t + "'");
+      have_type = true;
+      if (auto xf = args.optional_number()) load.xf = *xf;
+      if (auto yf = args.optional_number()) load.yf = *yf;
+      if (auto zf = args.optional_number()) (void)zf;
+    } else {
+      args.fail("unknown option '" + args.peek() + "'");
+    }
+  }
+  if (!have_type) args.fail("missing -type -selfWeight");
+  for (int t : load.elements) ctx.domain.element(t, args.command());
+  p.self_weight.push_back(std::move(load));
+  return {};
+}
+
+std::string cmd_rayleigh(Context& ctx, common::CommandArgs& args) {
+  domain::RayleighFactors f;
+  f.alpha_m = args.number("alphaM");
+  f.beta_k = args.number("betaK");
+  f.beta_k0 = args.number("betaK0");
+  f.beta_kc = args.number("betaKc");
+  args.expect_end();
+  ctx.domain.set_rayleigh(f);
+  return {};
+}
+
+std::string cmd_set_parameter(Context& ctx, common::CommandArgs& args) {
+  double value = 0.0;
+  bool have_value = false;
+  std::vector<domain::Element*> targets;
+  bool have_targets = false;
+  std::string name;
+  while (!args.empty()) {
+    if (args.flag("-val")) { value = args.number("-val value"); have_value = true; }
+    else if (args.flag("-ele")) {
+      have_targets = true;
+      while (auto t = args.optional_integer()) targets.push_back(&ctx.domain.element(*t, args.command()));
+    } else if (args.flag("-eleRange")) {
+      have_targets = true;
+      const int a = args.integer("-eleRange start"), b = args.integer("-eleRange end");
+      for (const auto& [tag, e] : ctx.domain.elements()) if (tag >= a && tag <= b) targets.push_back(e.get());
+    } else {
+      name = args.word("parameter name");
+      while (!args.empty()) name = args.word("parameter name");  // the last word names the parameter
+    }
+  }
+  if (!have_value) args.fail("missing -val value");
+  if (name.empty()) args.fail("missing parameter name (e.g. E, nu, rho, materialState)");
+  if (!have_targets) for (const auto& [tag, e] : ctx.domain.elements()) targets.push_back(e.get());
+  int accepted = 0;
+  for (domain::Element* e : targets) accepted += e->set_parameter(name, value) ? 1 : 0;
+  if (accepted == 0 && !targets.empty()) {
+    std::cerr << "WARNING setParameter: no element's material has a parameter '" << name << "'\n";
+  }
+  return {};
+}
+
+std::string cmd_update_material_stage(Context& ctx, common::CommandArgs& args) {
+  int tag = 0, stage = 0;
+  bool have_tag = false, have_stage = false;
+  while (!args.empty()) {
+    if (args.flag("-material")) { tag = args.integer("-material tag"); have_tag = true; }
+    else if (args.flag("-stage")) { stage = args.integer("-stage value"); have_stage = true; }
+    else if (args.flag("-parameter")) args.integer("-parameter tag");
+    else args.fail("unknown option '" + args.peek() + "'");
+  }
+  if (!have_tag || !have_stage) args.fail("missing -material tag or -stage value");
+  auto it = ctx.materials.find(tag);
+  if (it == ctx.materials.end()) args.fail("nDMaterial " + std::to_string(tag) + " does not exist");
+  bool any = it->second->update_stage(stage);
+  for (const auto& [etag, e] : ctx.domain.elements()) {
+    if (e->material_tag() == tag) any = e->update_material_stage(stage) || any;
+  }
+  if (!any) std::cerr << "WARNING updateMaterialStage: nDMaterial " << tag << " has no stages\n";
+  ctx.domain.update_elements();
+  return {};
+}
+
+}  // namespace fem::tcl

@@ -1,0 +1,178 @@
+// Queries (nodeDisp ... getLoadFactor) in OpenSees' "%35.20f" format, record, recorder, print -JSON.
+#include <cstdio>
+#include <iostream>
+
+#include "common/atomic_file.hpp"
+#include "fem_tcl/recorders/recorders.hpp"
+#include "fem_tcl/tcl/commands.hpp"
+
+namespace fem::tcl {
+
+std::string format_values(const double* values, std::size_t n) {
+  std::string out;
+  char buffer[400];
+  for (std::size_t i = 0; i < n; ++i) {
+    std::snprintf(buffer, sizeof buffer, "%35.20f", values[i]);
+    out += buffer;
+  }
+  return out;
+}
+
+namespace {
+
+enum class NodeQuantity { Disp, Vel, Accel, Coord, Reaction };
+
+std::string node_query(Context& ctx, common::CommandArgs& args, NodeQuantity q) {
+  const int tag = args.integer("nodeTag");
+  int dof = 0;
+  if (!args.empty()) dof = args.integer(q == NodeQuantity::Coord ? "dim" : "dof");
+  args.expect_end();
+  const domain::Node& n = ctx.domain.node(tag, args.command());
+  const domain::Vector2* v = nullptr;
+  switch (q) {
+    case NodeQuantity::Disp: v = &n.disp; break;
+    case NodeQuantity::Vel: v = &n.vel; break;
+    case NodeQuantity::Accel: v = &n.accel; break;
+    case NodeQuantity::Coord: v = &n.crd; break;
+    case NodeQuantity::Reaction: v = &n.reaction; break;
+  }
+  if (dof == 0) return format_values(v->data(), 2);
+  if (dof < 1 || dof > 2) args.fail("expected dof 1 or 2, got " + std::to_string(dof));
+  return format_values(v->data() + dof - 1, 1);
+}
+
+}  // namespace
+
+std::string cmd_node_disp(Context& c, common::CommandArgs& a) { return node_query(c, a, NodeQuantity::Disp); }
+std::string cmd_node_vel(Context& c, common::CommandArgs& a) { return node_query(c, a, NodeQuantity::Vel); }
+std::string cmd_node_accel(Context& c, common::CommandArgs& a) { return node_query(c, a, NodeQuantity::Accel); }
+std::string cmd_node_coord(Context& c, common::CommandArgs& a) { return node_query(c, a, NodeQuantity::Coord); }
+std::string cmd_node_reaction(Context& c, common::CommandArgs& a) { return node_query(c, a, NodeQuantity::Reaction); }
+
+std::string cmd_ele_response(Context& ctx, common::CommandArgs& args) {
+  const int tag = args.integer("eleTag");
+  std::vector<std::string> response;
+  while (!args.empty()) response.push_back(args.word("response"));
+  if (response.empty()) args.fail("missing response (e.g. stress, stresses, forces, material 1 strain)");
+  domain::Element& e = ctx.domain.element(tag, args.command());
+  const auto values = e.response(response);
+  if (!values) args.fail("element " + std::to_string(tag) + " (" + e.type_name() + ") has no response '" + response[0] + "'");
+  return format_values(values->data(), values->size());
+}
+
+std::string cmd_get_node_tags(Context& ctx, common::CommandArgs& args) {
+  args.expect_end();
+  std::string out;
+  for (const auto& [tag, n] : ctx.domain.nodes()) out += (out.empty() ? "" : " ") + std::to_string(tag);
+  return out;
+}
+
+std::string cmd_get_ele_tags(Context& ctx, common::CommandArgs& args) {
+  args.expect_end();
+  std::string out;
+  for (const auto& [tag, e] : ctx.domain.elements()) out += (out.empty() ? "" : " ") + std::to_string(tag);
+  return out;
+}
+
+std::string cmd_ele_nodes(Context& ctx, common::CommandArgs& args) {
+  const int tag = args.integer("eleTag");
+  args.expect_end();
+  const domain::Element& e = ctx.domain.element(tag, args.command());
+  std::string out;
+  for (const domain::Node* n : e.nodes()) out += (out.empty() ? "" : " ") + std::to_string(n->tag);
+  return out;
+}
+
+std::string cmd_reactions(Context& ctx, common::CommandArgs& args) {
+  if (args.flag("-incInertia") || args.flag("-dynamic") || args.flag("-rayleigh")) {
+    args.fail("only static reactions (no flag) are supported");
+  }
+  args.expect_end();
+  ctx.domain.compute_reactions();
+  return {};
+}
+
+std::string cmd_get_load_factor(Context& ctx, common::CommandArgs& args) {
+  const int tag = args.integer("patternTag");
+  args.expect_end();
+  const domain::LoadPattern* p = ctx.domain.find_pattern(tag);
+  if (!p) args.fail("load pattern " + std::to_string(tag) + " does not exist");
+  const double f = p->last_factor();
+  return format_values(&f, 1);
+}
+
+std::string cmd_record(Context& ctx, common::CommandArgs& args) {
+  args.expect_end();
+  ctx.domain.record();
+  return {};
+}
+
+std::string cmd_recorder(Context& ctx, common::CommandArgs& args) {
+  ctx.domain.add_recorder(recorders::parse_recorder(args, ctx.domain));
+  return {};
+}
+
+namespace {
+
+void write_json_list(std::ostream& os, const char* indent, const std::vector<std::string>& items) {
+  os << "[\n";
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    os << indent << "\t" << items[i] << (i + 1 < items.size() ? ",\n" : "\n");
+  }
+  if (items.empty()) os << "\n";
+  os << indent << "]";
+}
+
+void write_model_json(Context& ctx, std::ostream& os) {
+  std::vector<std::string> materials, nodes, elements;
+  for (const auto& [tag, m] : ctx.materials) materials.push_back(m->to_json().dump());
+  for (const auto& [tag, n] : ctx.domain.nodes()) {
+    nlohmann::ordered_json j;
+    j["name"] = tag;
+    j["ndf"] = 2;
+    j["crd"] = {n->crd[0], n->crd[1]};
+    if (n->has_mass) j["mass"] = {n->mass[0], n->mass[1]};
+    nodes.push_back(j.dump());
+  }
+  for (const auto& [tag, e] : ctx.domain.elements()) elements.push_back(e->to_json().dump());
+  os << "{\n\"StructuralAnalysisModel\": {\n";
+  os << "\t\"BIM\": \"unknown\",\n\t\"description\": \"\",\n\t\"engineer\": \"\",\n";
+  os << "\t\"units\": {\n\t\t\"force\": \"\",\n\t\t\"length\": \"\",\n\t\t\"time\": \"\",\n\t\t\"temperature\": \"\"\n\t},\n";
+  os << "\t\"properties\": {\n\t\t\"uniaxialMaterials\": ";
+  write_json_list(os, "\t\t", {});
+  os << ",\n\t\t\"ndMaterials\": ";
+  write_json_list(os, "\t\t", materials);
+  os << ",\n\t\t\"sections\": ";
+  write_json_list(os, "\t\t", {});
+  os << ",\n\t\t\"crdTransformations\": ";
+  write_json_list(os, "\t\t", {});
+  os << "\n\t},\n\t\"geometry\": {\n\t\t\"nodes\": ";
+  write_json_list(os, "\t\t", nodes);
+  os << ",\n\t\t\"elements\": ";
+  write_json_list(os, "\t\t", elements);
+  os << "\n\t}\n}\n}\n";
+}
+
+}  // namespace
+
+std::string cmd_print(Context& ctx, common::CommandArgs& args) {
+  bool json = false;
+  std::string file;
+  while (!args.empty()) {
+    if (args.flag("-JSON")) json = true;
+    else if (args.flag("-file")) file = args.word("-file name");
+    else args.fail("unsupported option '" + args.peek() + "' (fem_tcl prints the model with -JSON only)");
+  }
+  if (!json) args.fail("only 'print -JSON <-file f>' is supported");
+  if (file.empty()) {
+    write_model_json(ctx, std::cout);
+    std::cout.flush();
+    return {};
+  }
+  common::AtomicTextFile out(file);
+  write_model_json(ctx, out.stream());
+  out.commit();
+  return {};
+}
+
+}  // namespace fem::tcl
