@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const std::vector<std::string>& stress_smoothing_methods() {
-  static const std::vector<std::string> methods = {"none", "cell_volumetric", "nodal"};
+  static const std::vector<std::string> methods = {"none", "cell_volumetric", "nodal_strain"};
   return methods;
 }
 
@@ -178,8 +178,11 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
   else a.fail(scheme_key, "unknown scheme \"" + scheme + "\" (expected usf, usl or musl)");
   an.velocity_update = a.boolean_or("velocity_update", false);
   an.locate_particles = a.boolean_or("locate_particles", true);
-  an.dt = a.number("dt");
-  if (!(an.dt > 0)) a.fail("dt", "expected a number > 0, got " + num(an.dt));
+  // Extension: with cfl > 0 the engine picks dt = cfl h / c_p, and dt (optional then) is its upper bound.
+  an.cfl = a.number_or("cfl", 0.0);
+  if (!(an.cfl >= 0 && an.cfl <= 1)) a.fail("cfl", "expected a number in (0, 1] (0 or absent: fixed dt), got " + num(an.cfl));
+  an.dt = an.cfl > 0 ? a.number_or("dt", 0.0) : a.number("dt");
+  if (!(an.dt > 0) && !(an.cfl > 0 && an.dt == 0)) a.fail("dt", "expected a number > 0, got " + num(an.dt));
   an.nsteps = a.integer("nsteps");
   if (an.nsteps <= 0) a.fail("nsteps", "expected an integer > 0, got " + std::to_string(an.nsteps));
   uuid = a.string_or("uuid", "");
@@ -212,8 +215,6 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
     if (!nlb->is_number_integer() || nlb->get<long long>() <= 0)
       a.fail("nload_balance_steps", "expected an integer > 0 (MPI load balancing; no effect here)");
   // Extensions (mpm/README.md).
-  an.cfl = a.number_or("cfl", 0.0);
-  if (!(an.cfl >= 0 && an.cfl <= 1)) a.fail("cfl", "expected a number in (0, 1] (0 or absent: fixed dt), got " + num(an.cfl));
   an.pic_blend = a.number_or("pic_blend", an.velocity_update ? 1.0 : 0.0);
   if (!(an.pic_blend >= 0 && an.pic_blend <= 1)) a.fail("pic_blend", "expected a number in [0, 1], got " + num(an.pic_blend));
   if (an.velocity_update && an.pic_blend != 1.0)

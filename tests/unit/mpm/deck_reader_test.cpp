@@ -344,3 +344,26 @@ TEST(DeckReaderErrors, WrongTypesAreNamed) {
   s.deck["material_sets"] = json::parse(R"([{"material_id": 0, "pset_id": 0}])");
   EXPECT_MESSAGE_HAS(s.error(), "material_sets: given but mesh.update_materials is not true");
 }
+
+TEST(DeckReader, Extensions) {
+  SmallDeck d("extensions");
+  d.deck["analysis"].erase("dt");
+  d.deck["analysis"]["cfl"] = 0.5;
+  d.deck["analysis"]["pic_blend"] = 0.25;
+  d.deck["analysis"]["stress_smoothing"] = "cell_volumetric";
+  const auto deck = d.read();
+  EXPECT_EQ(deck.analysis.cfl, 0.5);
+  EXPECT_EQ(deck.analysis.dt, 0.0);  // no upper bound: the engine picks cfl h / c_p
+  EXPECT_EQ(deck.analysis.pic_blend, 0.25);
+  EXPECT_EQ(deck.analysis.stress_smoothing, "cell_volumetric");
+  SmallDeck u("smoothing");
+  u.deck["analysis"]["stress_smoothing"] = "magic";
+  EXPECT_MESSAGE_HAS(u.error(), "analysis.stress_smoothing: unknown method \"magic\"");
+  SmallDeck p("pic");
+  p.deck["analysis"]["velocity_update"] = true;
+  p.deck["analysis"]["pic_blend"] = 0.5;
+  EXPECT_MESSAGE_HAS(p.error(), "analysis.pic_blend");
+  SmallDeck n("nodt");
+  n.deck["analysis"].erase("dt");
+  EXPECT_MESSAGE_HAS(n.error(), "analysis.dt: missing");
+}

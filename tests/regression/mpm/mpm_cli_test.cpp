@@ -1,0 +1,181 @@
+// The mpm program end to end: a resumed run continues bit for bit as the uninterrupted one (same
+// thread count), bad input exits 2 with one line naming the problem and writes nothing, and a
+// numerical failure exits 3 after writing the last good state. Decks are copies of the CB-Geo
+// reference decks (tests/data/reference_runs/cbgeo) with the edits each test states.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "mpm_run.hpp"
+
+using namespace mpm_regression;
+using nlohmann::json;
+
+namespace {
+
+json load(const fs::path& f) { return json::parse(std::ifstream(f)); }
+void save(const fs::path& f, const json& j) { std::ofstream(f) << j.dump(2); }
+
+/// Particle tables compared record by record, byte for byte (records read into zeroed memory).
+void expect_identical_tables(const fs::path& a, const fs::path& b) {
+  const auto ra = mpm::io::read_particle_table(a), rb = mpm::io::read_particle_table(b);
+  ASSERT_EQ(ra.size(), rb.size()) << a << " vs " << b;
+  std::size_t differing = 0;
+  for (std::size_t k = 0; k < ra.size(); ++k)
+    if (std::memcmp(&ra[k], &rb[k], sizeof(mpm::io::ParticleRecord)) != 0) ++differing;
+  EXPECT_EQ(differing, 0u) << a << " vs " << b;
+}
+
+std::size_t line_count(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+/// Runs the uninterrupted deck in folder A, then in folder B resumes from A's output at `resume_step`
+/// and checks that every later output and series.csv are identical.
+void check_resume(const std::string& name, const std::string& uuid, long long nsteps, long long every, long long resume_step,
+                  const std::string& threads) {
+  const fs::path a = copy_case(name, name + "_full"), b = copy_case(name, name + "_resumed");
+  for (const fs::path& d : {a, b}) {
+    json deck = load(d / "mpm.json");
+    deck["analysis"]["nsteps"] = nsteps;
+    deck["post_processing"]["output_steps"] = every;
+    save(d / "mpm.json", deck);
+  }
+  const auto full = run_mpm(a, "mpm.json", threads);
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  const fs::path ra = a / "results" / uuid, rb = b / "results" / uuid;
+  fs::create_directories(rb);
+  fs::copy_file(ra / mpm::io::particle_file_name(resume_step, nsteps), rb / mpm::io::particle_file_name(resume_step, nsteps));
+  fs::copy_file(ra / "series.csv", rb / "series.csv");
+  json deck = load(b / "mpm.json");
+  deck["analysis"]["resume"] = {{"resume", true}, {"uuid", uuid}, {"step", resume_step}};
+  save(b / "mpm.json", deck);
+  const auto resumed = run_mpm(b, "mpm.json", threads);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  for (long long s = resume_step + every; s < nsteps; s += every)
+    expect_identical_tables(ra / mpm::io::particle_file_name(s, nsteps), rb / mpm::io::particle_file_name(s, nsteps));
+  EXPECT_EQ(file_text(ra / "series.csv"), file_text(rb / "series.csv"));
+}
+
+}  // namespace
+
+TEST(MpmResume, ElasticBlockContinuesBitForBit) {
+  // Resumed at step 500 of 1001 (before the impact), compared at 750 and 1000 (after it); 1 thread.
+  check_resume("elastic_block_drop", "block_drop", 1001, 250, 500, "--threads 1");
+}
+
+TEST(MpmResume, MohrCoulombGimpColumnContinuesBitForBit) {
+  // The column deck cut to 1001 steps: GIMP, K0 stresses, Mohr-Coulomb state variables, friction;
+  // 2 threads in both runs.
+  check_resume("mc_column_gimp_short", "mc_column", 1001, 100, 400, "--threads 2");
+}
+
+struct BadDeck {
+  const char* name;
+  std::function<void(const fs::path& dir, json& deck)> edit;
+  const char* expected;  ///< text the one-line message must contain
+};
+
+TEST(MpmBadInput, ExitsTwoWithOneLineNamingTheProblemAndWritesNothing) {
+  const std::vector<BadDeck> cases = {
+      {"unknown_key", [](const fs::path&, json& d) { d["analysis"]["newmark"] = json::object(); },
+       "mpm.json: analysis.newmark: unsupported key"},
+      {"unknown_scheme", [](const fs::path&, json& d) { d["analysis"]["mpm_scheme"] = "usq"; },
+       "analysis.mpm_scheme: unknown scheme \"usq\""},
+      {"negative_density", [](const fs::path&, json& d) { d["materials"][0]["density"] = -1500.0; },
+       "materials[0].density: expected a number > 0"},
+      {"zero_dt", [](const fs::path&, json& d) { d["analysis"]["dt"] = 0.0; }, "analysis.dt: expected a number > 0"},
+      {"undefined_material", [](const fs::path&, json& d) { d["particles"][0]["generator"]["material_id"] = 4; },
+       "material 4 is not defined"},
+      {"missing_resume_file",
+       [](const fs::path&, json& d) { d["analysis"]["resume"] = {{"resume", true}, {"uuid", "block_drop"}, {"step", 500}}; },
+       "resume file results/block_drop/particles0500.h5 not found"},
+      {"particle_outside", [](const fs::path& dir, json&) { std::ofstream(dir / "particles.txt") << "2\n2.1 1.1\n7.5 1.0\n"; },
+       "particles.txt: particle 1 at (7.5, 1) is outside the grid"},
+      {"missing_mesh", [](const fs::path& dir, json&) { fs::remove(dir / "mesh.txt"); }, "mesh.txt: file not found"},
+      {"truncated_json", [](const fs::path& dir, json& d) {
+         const std::string text = d.dump(2);
+         d = json();  // written below as the cut text instead
+         std::ofstream(dir / "cut.json") << text.substr(0, text.size() / 2);
+       }, "cut.json: invalid JSON"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const fs::path dir = copy_case("elastic_block_drop", std::string("bad_") + c.name);
+    json deck = load(dir / "mpm.json");
+    c.edit(dir, deck);
+    std::string input = "mpm.json";
+    if (deck.is_null()) input = "cut.json";
+    else save(dir / "mpm.json", deck);
+    const auto r = run_mpm(dir, input);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(line_count(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "results")) << "bad input must write nothing";
+  }
+  // A missing input file, and a bad command line.
+  const fs::path dir = copy_case("elastic_block_drop", "bad_no_input");
+  auto r = run_mpm(dir, "absent.json");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("absent.json"), std::string::npos) << r.err;
+  r = run_mpm(dir, "mpm.json", "--threads -3");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir / "results"));
+}
+
+TEST(MpmNumericalFailure, ParticleLeavingTheGridStopsTheRunAfterWritingTheLastGoodState) {
+  // The block deck without its base constraint: the block falls through y = 0 near step 957.
+  const fs::path dir = copy_case("elastic_block_drop", "falls_out");
+  json deck = load(dir / "mpm.json");
+  deck["mesh"].erase("boundary_conditions");
+  save(dir / "mpm.json", deck);
+  const auto r = run_mpm(dir);
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("left the grid"), std::string::npos) << r.err;
+  const auto at = r.err.find("written to ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const fs::path state = r.err.substr(at + 11, r.err.size() - at - 12);
+  ASSERT_TRUE(fs::exists(state)) << state;
+  const auto ps = mpm::io::read_particle_table(state);
+  ASSERT_EQ(ps.size(), 64u);
+  for (const auto& p : ps) EXPECT_GE(p.coord_y, 0.0);  // the last good state is still inside the grid
+}
+
+TEST(MpmExtensions, CflTimeStepPicBlendAndStressSmoothingRun) {
+  // The block deck, 21 steps, with each extension of mpm/README.md.
+  const std::vector<std::pair<std::string, json>> variants = {
+      {"cfl", {{"cfl", 0.5}}},
+      {"pic_blend", {{"pic_blend", 0.3}}},
+      {"cell_volumetric", {{"stress_smoothing", "cell_volumetric"}}},
+      {"nodal_strain", {{"stress_smoothing", "nodal_strain"}}},
+  };
+  for (const auto& [name, keys] : variants) {
+    SCOPED_TRACE(name);
+    const fs::path dir = copy_case("elastic_block_drop", "ext_" + name);
+    json deck = load(dir / "mpm.json");
+    deck["analysis"]["nsteps"] = 21;
+    deck["post_processing"]["output_steps"] = 10;
+    for (const auto& [k, v] : keys.items()) deck["analysis"][k] = v;
+    if (name == "cfl") deck["analysis"].erase("dt");
+    save(dir / "mpm.json", deck);
+    const auto r = run_mpm(dir, "mpm.json", "--threads 1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto series = read_csv(dir / "results/block_drop/series.csv");
+    ASSERT_EQ(series.at("step").size(), 3u);
+    if (name == "cfl") {
+      // dt = cfl h / c_p, c_p = sqrt((K + 4G/3) / rho) = sqrt(4.8e6 / 1500) for E = 4e6, nu = 0.25.
+      EXPECT_NEAR(series.at("dt")[0], 0.5 * 0.5 / std::sqrt(4.8e6 / 1500.0), 1e-12);
+      EXPECT_NEAR(series.at("time")[2], 21 * series.at("dt")[0], 1e-9);
+    }
+  }
+}
+
+TEST(MpmCommandLine, HelpAndVersion) {
+  const fs::path dir = copy_case("elastic_block_drop", "cli");
+  const std::string cmd = "'" + kMpm.string() + "' --version > '" + (dir / "v.txt").string() + "'";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_NE(file_text(dir / "v.txt").find("mpm (geoflow)"), std::string::npos);
+  const std::string help = "'" + kMpm.string() + "' --help > '" + (dir / "h.txt").string() + "'";
+  ASSERT_EQ(std::system(help.c_str()), 0);
+  EXPECT_NE(file_text(dir / "h.txt").find("--threads"), std::string::npos);
+}
