@@ -33,6 +33,8 @@ Eigen::Matrix3d principal_elasticity(const IsotropicElasticity& el) {
   return d;
 }
 
+bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& st);
+
 Planes make_planes(const IsotropicElasticity& el, const MohrCoulombStrength& st) {
   Planes p;
   const Eigen::Matrix3d d = principal_elasticity(el);
@@ -52,7 +54,7 @@ Planes make_planes(const IsotropicElasticity& el, const MohrCoulombStrength& st)
   p.apex_stress = p.apex ? st.cohesion * cf / sf : std::numeric_limits<double>::infinity();
   // Rankine cutoff clamped at the apex: at or above it the pyramid already bounds s1 ([CDA] sec. 5).
   const double t = st.tension_cutoff;
-  p.tension = std::isfinite(t) && t < p.apex_stress;
+  p.tension = tension_active(sf, cf, st);
   for (int i = 0; i < 3; ++i) {
     p.m[kT1 + i] = Eigen::Vector3d::Unit(i);
     p.dn[kT1 + i] = d.col(i);
@@ -73,7 +75,7 @@ Spectral decompose(const PlaneStrainStress& s) {
   Spectral sp;
   const double center = 0.5 * (s[0] + s[1]);
   const double half = 0.5 * (s[0] - s[1]);
-  sp.radius = std::hypot(half, s[3]);
+  sp.radius = std::sqrt(half * half + s[3] * s[3]);
   if (sp.radius > 0.0) {
     sp.cos2 = half / sp.radius;
     sp.sin2 = s[3] / sp.radius;
@@ -125,9 +127,21 @@ double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* 
       amax = std::max(amax, std::abs(a(j, l)));
     }
   }
-  const double det = a.determinant();
-  if (!(std::abs(det) > 1e-12 * std::pow(amax, k))) return std::numeric_limits<double>::infinity();
-  const Eigen::Vector3d gamma = a.inverse() * b;
+  // Closed-form solves by size (1, 2 or 3 active planes); a (near-)singular set is not a candidate.
+  Eigen::Vector3d gamma = Eigen::Vector3d::Zero();
+  if (k == 1) {
+    if (!(std::abs(a(0, 0)) > 1e-12 * amax)) return std::numeric_limits<double>::infinity();
+    gamma[0] = b[0] / a(0, 0);
+  } else if (k == 2) {
+    const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
+    if (!(std::abs(det) > 1e-12 * amax * amax)) return std::numeric_limits<double>::infinity();
+    gamma[0] = (a(1, 1) * b[0] - a(0, 1) * b[1]) / det;
+    gamma[1] = (a(0, 0) * b[1] - a(1, 0) * b[0]) / det;
+  } else {
+    const double det = a.determinant();
+    if (!(std::abs(det) > 1e-12 * amax * amax * amax)) return std::numeric_limits<double>::infinity();
+    gamma = a.inverse() * b;
+  }
   out = trial;
   double violation = -std::numeric_limits<double>::infinity();
   for (int l = 0; l < k; ++l) {
@@ -144,15 +158,30 @@ double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* 
   return violation - tol;
 }
 
-/// The return in sorted principal space. `scale`: a stress magnitude for the tolerances.
+/// Tension cutoff in force: finite and below the apex c cot(phi) ([CDA] sec. 5).
+bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
+  const double t = st.tension_cutoff;
+  if (!std::isfinite(t)) return false;
+  return sin_phi > 0.0 ? t < st.cohesion * cos_phi / sin_phi : true;
+}
+
+/// The elastic test on sorted principal trial values, [SPO] Box 8.4 step (ii), with a round-off tolerance of
+/// 1e-12 of the stress scale (so a state returned onto the surface stays elastic when reloaded with zero
+/// increment). The one place this test is made, for the fast path and for the full return alike.
+bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
+  const double two_c_cos = 2.0 * st.cohesion * cos_phi;
+  const bool tension = tension_active(sin_phi, cos_phi, st);
+  const double scale = std::max({std::abs(t[0]), std::abs(t[2]), two_c_cos, tension ? std::abs(st.tension_cutoff) : 0.0});
+  const double tol = 1e-12 * scale;
+  const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
+  return f_main <= tol && (!tension || t[0] - st.tension_cutoff <= tol);
+}
+
+/// The return in sorted principal space for a trial OUTSIDE the surface (see inside()).
 PrincipalResult principal_return(const Planes& p, const Eigen::Vector3d& trial, double shear_modulus) {
   const double scale = std::max({std::abs(trial[0]), std::abs(trial[2]), std::abs(p.r[kMain]),
                                  p.tension ? std::abs(p.r[kT1]) : 0.0});
   PrincipalResult res{trial, ReturnRegion::Elastic, {0, 0, 0}, 0};
-  const double f_main = p.m[kMain].dot(trial) - p.r[kMain];
-  const double f_tension = p.tension ? trial[0] - p.r[kT1] : -1.0;
-  const double tol_elastic = 1e-12 * scale;
-  if (f_main <= tol_elastic && f_tension <= tol_elastic) return res;
 
   struct Candidate {
     std::array<int, 3> ids;
@@ -229,10 +258,11 @@ PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStra
 
 MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const IsotropicElasticity& el,
                                       const MohrCoulombStrength& st) {
-  const Planes planes = make_planes(el, st);
   const Spectral sp = decompose(trial);
+  if (inside(sp.sorted, std::sin(st.friction), std::cos(st.friction), st))
+    return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
+  const Planes planes = make_planes(el, st);
   const PrincipalResult pr = principal_return(planes, sp.sorted, el.shear_modulus);
-  if (pr.region == ReturnRegion::Elastic) return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
   MohrCoulombUpdate up;
   up.stress = recompose(sp, pr.stress);
   up.region = pr.region;
@@ -259,10 +289,10 @@ Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& tr
       lambda, lambda + 2.0 * g, 0.0,   //
       lambda, lambda, 0.0,             //
       0.0, 0.0, g;
-  const Planes planes = make_planes(el, st);
   const Spectral sp = decompose(trial);
+  if (inside(sp.sorted, std::sin(st.friction), std::cos(st.friction), st)) return d;
+  const Planes planes = make_planes(el, st);
   const PrincipalResult pr = principal_return(planes, sp.sorted, g);
-  if (pr.region == ReturnRegion::Elastic) return d;
 
   // Principal algorithmic tangent ds/ds_trial = I - D N A^-1 M^T over the active planes ([SPO] eq. (8.51));
   // zero at a vertex (the stress is a fixed point).
