@@ -230,11 +230,20 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
 }
 
 /// Constraint lists of mesh.boundary_conditions.
-void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const EntitySets& sets, Deck& deck,
-                              const fs::path& dir) {
+void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const EntitySets& sets,
+                              const std::map<std::string, std::vector<int>>& named, Deck& deck, const fs::path& dir) {
   auto node_set = [&](StrictObject& c) {
-    const long long nset = c.integer("nset_id");
     std::vector<int> nodes;
+    if (c.has("nset_id") && c.required("nset_id").is_string()) {  // extension: a generated grid's named set
+      const std::string name = c.string("nset_id");
+      const auto it = named.find(name);
+      if (it == named.end())
+        c.fail("nset_id", "no node set named \"" + name + "\"" +
+                              (named.empty() ? " (named sets exist only on a generated grid)"
+                                             : " (expected left, right, bottom, top or all)"));
+      return it->second;
+    }
+    const long long nset = c.integer("nset_id");
     if (nset == -1) {  // CB-Geo: set -1 is every node
       for (int k = 0; k < deck.grid.nodes_x * deck.grid.nodes_y; ++k) nodes.push_back(k);
       return nodes;
@@ -483,20 +492,41 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   if (cell_type == "ED2Q4") type = CellType::Linear4;
   else if (cell_type == "ED2Q16G") type = CellType::Gimp16;
   else mesh.fail("cell_type", "unsupported cell type \"" + cell_type + "\" (expected ED2Q4 or ED2Q16G)");
-  const std::string mesh_file = mesh.string("mesh");
-  const MeshFile mf = read_mesh_file(dir / mesh_file, mesh_file, type == CellType::Gimp16 ? 16 : 4);
-  const Lattice lattice = recognise_lattice(mf, type, mesh_file);
+  Lattice lattice;
+  std::map<std::string, std::vector<int>> named_sets;
+  if (const json* gen = mesh.optional("generator")) {  // extension: a generated grid, no mesh file
+    if (mesh.has("mesh")) mesh.fail("mesh", "give a mesh file or a generator, not both");
+    StrictObject g(*gen, shown, "mesh.generator");
+    auto pair = [&](const char* key, bool integer) {
+      const json& v = g.required(key);
+      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
+          (integer && !(v[0].is_number_integer() && v[1].is_number_integer())))
+        g.fail(key, std::string("expected [") + (integer ? "nx, ny] (2 integers)" : "x, y] (2 numbers)"));
+      return Eigen::Vector2d(v[0].get<double>(), v[1].get<double>());
+    };
+    const Eigen::Vector2d origin = pair("origin", false), h = pair("cell_size", false), n = pair("cells", true);
+    if (!(h.x() > 0 && h.y() > 0)) g.fail("cell_size", "expected sizes > 0");
+    if (!(n.x() >= 1 && n.y() >= 1 && n.x() * n.y() <= 1e8)) g.fail("cells", "expected 1 to 1e8 cells");
+    g.finish();
+    lattice = generate_lattice(origin, h, static_cast<int>(n.x()), static_cast<int>(n.y()), type);
+    named_sets = boundary_node_sets(lattice.grid);
+  } else {
+    const std::string mesh_file = mesh.string("mesh");
+    const MeshFile mf = read_mesh_file(dir / mesh_file, mesh_file, type == CellType::Gimp16 ? 16 : 4);
+    lattice = recognise_lattice(mf, type, mesh_file);
+  }
   deck.grid = lattice.grid;
 
   EntitySets sets;
   if (const json* es = mesh.optional("entity_sets")) {
     if (!es->is_string()) mesh.fail("entity_sets", "expected a file name");
     const std::string f = es->get<std::string>();
-    sets = read_entity_sets(dir / f, f, static_cast<long long>(mf.nodes.size()), static_cast<long long>(mf.cells.size()));
+    sets = read_entity_sets(dir / f, f, static_cast<long long>(lattice.node_index.size()),
+                            static_cast<long long>(lattice.cell_ij.size()));
   }
   if (const json* bc = mesh.optional("boundary_conditions")) {
     StrictObject b(*bc, shown, "mesh.boundary_conditions");
-    read_boundary_conditions(b, lattice, sets, deck, dir);
+    read_boundary_conditions(b, lattice, sets, named_sets, deck, dir);
   }
 
   // particles: generators, or the resume file.

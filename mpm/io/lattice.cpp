@@ -132,4 +132,42 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
   return out;
 }
 
+Lattice generate_lattice(const Eigen::Vector2d& origin, const Eigen::Vector2d& h, int cells_x, int cells_y, CellType type) {
+  const int halo = type == CellType::Gimp16 ? 1 : 0;
+  Lattice out;
+  Grid& g = out.grid;
+  g.cell_type = type;
+  g.hx = h.x();
+  g.hy = h.y();
+  g.x0 = origin.x() - halo * h.x();
+  g.y0 = origin.y() - halo * h.y();
+  g.nodes_x = cells_x + 1 + 2 * halo;
+  g.nodes_y = cells_y + 1 + 2 * halo;
+  g.xmin = origin.x();
+  g.ymin = origin.y();
+  g.xmax = origin.x() + cells_x * h.x();
+  g.ymax = origin.y() + cells_y * h.y();
+  out.node_index.resize(static_cast<std::size_t>(g.nodes_x) * g.nodes_y);
+  for (std::size_t k = 0; k < out.node_index.size(); ++k) out.node_index[k] = static_cast<int>(k);
+  for (int j = 0; j < cells_y; ++j)
+    for (int i = 0; i < cells_x; ++i) out.cell_ij.push_back({i + halo, j + halo});
+  return out;
+}
+
+std::map<std::string, std::vector<int>> boundary_node_sets(const Grid& g) {
+  std::map<std::string, std::vector<int>> sets;
+  const double ex = 1e-9 * g.hx, ey = 1e-9 * g.hy;
+  for (int j = 0; j < g.nodes_y; ++j)
+    for (int i = 0; i < g.nodes_x; ++i) {
+      const int k = i + j * g.nodes_x;
+      const double x = g.x0 + i * g.hx, y = g.y0 + j * g.hy;
+      sets["all"].push_back(k);
+      if (x <= g.xmin + ex) sets["left"].push_back(k);
+      if (x >= g.xmax - ex) sets["right"].push_back(k);
+      if (y <= g.ymin + ey) sets["bottom"].push_back(k);
+      if (y >= g.ymax - ey) sets["top"].push_back(k);
+    }
+  return sets;
+}
+
 }  // namespace mpm::io

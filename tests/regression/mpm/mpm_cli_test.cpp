@@ -170,6 +170,32 @@ TEST(MpmExtensions, CflTimeStepPicBlendAndStressSmoothingRun) {
   }
 }
 
+TEST(MpmExtensions, GeneratedGridRunsAsTheMeshFileItReplaces) {
+  // The column deck cut to 501 steps, once with its mesh.txt + node sets and once with a generated
+  // grid and named sets: the same lattice and constraints, so the outputs are identical.
+  const fs::path a = copy_case("mc_column_gimp_short", "grid_file"), b = copy_case("mc_column_gimp_short", "grid_generated");
+  for (const fs::path& d : {a, b}) {
+    json deck = load(d / "mpm.json");
+    deck["analysis"]["nsteps"] = 501;
+    deck["post_processing"]["output_steps"] = 250;
+    if (d == b) {
+      json& mesh = deck["mesh"];
+      mesh.erase("mesh");
+      mesh.erase("entity_sets");
+      mesh["generator"] = {{"origin", {0.0, 0.0}}, {"cell_size", {0.5, 0.5}}, {"cells", {60, 20}}};
+      auto& bc = mesh["boundary_conditions"];
+      bc["velocity_constraints"][0]["nset_id"] = "left";    // node set 0: x <= 0
+      bc["velocity_constraints"][1]["nset_id"] = "right";   // node set 2: x >= 30
+      bc["velocity_constraints"][2]["nset_id"] = "bottom";  // node set 1: y <= 0
+      bc["friction_constraints"][0]["nset_id"] = "bottom";
+    }
+    save(d / "mpm.json", deck);
+    const auto r = run_mpm(d, "mpm.json", "--threads 1");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  expect_identical_tables(a / "results/mc_column/particles500.h5", b / "results/mc_column/particles500.h5");
+}
+
 TEST(MpmCommandLine, HelpAndVersion) {
   const fs::path dir = copy_case("elastic_block_drop", "cli");
   const std::string cmd = "'" + kMpm.string() + "' --version > '" + (dir / "v.txt").string() + "'";

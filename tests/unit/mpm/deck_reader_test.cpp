@@ -367,3 +367,31 @@ TEST(DeckReader, Extensions) {
   n.deck["analysis"].erase("dt");
   EXPECT_MESSAGE_HAS(n.error(), "analysis.dt: missing");
 }
+
+TEST(DeckReader, GeneratedGimpGridWithNamedBoundarySets) {
+  SmallDeck d("generated");
+  d.deck["mesh"] = json::parse(R"({
+    "generator": {"origin": [0, 0], "cell_size": [0.5, 0.5], "cells": [8, 6]}, "cell_type": "ED2Q16G",
+    "boundary_conditions": {"velocity_constraints": [{"nset_id": "left", "dir": 0, "velocity": 0}],
+                            "friction_constraints": [{"nset_id": "bottom", "dir": 1, "sign_n": -1, "friction": 0.5}]}})");
+  const auto deck = d.read();
+  EXPECT_EQ(deck.grid.cell_type, mpm::io::CellType::Gimp16);
+  EXPECT_EQ(deck.grid.nodes_x, 8 + 3);  // 9 node columns + the GIMP halo on both sides
+  EXPECT_EQ(deck.grid.nodes_y, 6 + 3);
+  EXPECT_EQ(deck.grid.x0, -0.5);
+  EXPECT_EQ(deck.grid.xmin, 0.0);
+  EXPECT_EQ(deck.grid.xmax, 4.0);
+  EXPECT_EQ(deck.grid.ymax, 3.0);
+  // "left": the node columns at x = -0.5 and x = 0 (halo included), 2 x 9 nodes.
+  ASSERT_EQ(deck.velocity_constraints[0].nodes.size(), 18u);
+  EXPECT_EQ(deck.velocity_constraints[0].nodes[0], 0);
+  EXPECT_EQ(deck.velocity_constraints[0].nodes[1], 1);
+  EXPECT_EQ(deck.friction_constraints[0].nodes.size(), 22u);  // "bottom": rows y = -0.5 and 0
+  SmallDeck bad("generated_bad");
+  bad.deck["mesh"] = json::parse(R"({"generator": {"origin": [0, 0], "cell_size": [0.5, 0.5], "cells": [8, 6]},
+    "cell_type": "ED2Q4", "boundary_conditions": {"velocity_constraints": [{"nset_id": "floor", "dir": 1, "velocity": 0}]}})");
+  EXPECT_MESSAGE_HAS(bad.error(), "velocity_constraints[0].nset_id: no node set named \"floor\"");
+  SmallDeck named("named_on_file_mesh");
+  named.deck["mesh"]["boundary_conditions"]["velocity_constraints"][0]["nset_id"] = "left";
+  EXPECT_MESSAGE_HAS(named.error(), "named sets exist only on a generated grid");
+}
