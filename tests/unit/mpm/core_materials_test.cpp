@@ -1,0 +1,119 @@
+// Unit tests of mpm/core/materials.hpp: plane-strain linear elasticity (Hooke) and the Mohr-Coulomb
+// wrapper (CB-Geo's state variables and linear softening, include/materials/mohr_coulomb.tcc).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mpm/core/materials.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+using mpm::core::LinearElastic;
+using mpm::core::MohrCoulomb;
+
+mpm::io::MaterialSpec mc_spec() {
+  mpm::io::MaterialSpec s;
+  s.type = mpm::io::MaterialType::MohrCoulomb2D;
+  s.density = 2000;
+  s.youngs_modulus = 1e7;
+  s.poisson_ratio = 0.3;
+  const double d = std::acos(-1.0) / 180;
+  s.friction = 30 * d;
+  s.dilation = 5 * d;
+  s.cohesion = 1000;
+  s.residual_friction = 20 * d;
+  s.residual_dilation = 0;
+  s.residual_cohesion = 100;
+  s.peak_pdstrain = 0.01;
+  s.residual_pdstrain = 0.05;
+  s.tension_cutoff = 50;
+  s.softening = true;
+  return s;
+}
+
+TEST(LinearElastic, PlaneStrainHooke) {
+  mpm::io::MaterialSpec s;
+  s.youngs_modulus = 2e7;
+  s.poisson_ratio = 0.25;
+  const LinearElastic m = LinearElastic::from(s);
+  double stress[4] = {0, 0, 0, 0};
+  const double de[3] = {1e-4, -2e-4, 3e-4};
+  m.update(stress, de, nullptr);
+  // sigma = lambda tr(e) I + 2 G e, lambda = E nu / ((1 + nu)(1 - 2 nu)), G = E / (2 (1 + nu)).
+  const double E = 2e7, nu = 0.25, lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  EXPECT_CLOSE(stress[0], lambda * (-1e-4) + 2 * G * 1e-4, 1e-6, 1e-12);
+  EXPECT_CLOSE(stress[1], lambda * (-1e-4) + 2 * G * (-2e-4), 1e-6, 1e-12);
+  EXPECT_CLOSE(stress[2], lambda * (-1e-4), 1e-6, 1e-12);
+  EXPECT_CLOSE(stress[3], G * 3e-4, 1e-6, 1e-12);
+}
+
+TEST(MohrCoulombMaterial, InitialStateIsPeakStrength) {
+  const MohrCoulomb m = MohrCoulomb::from(mc_spec());
+  double sv[7];
+  m.initial_state(sv);
+  EXPECT_EQ(sv[0], m.phi_peak);
+  EXPECT_EQ(sv[1], m.psi_peak);
+  EXPECT_EQ(sv[2], 1000.0);
+  for (int i = 3; i < 7; ++i) EXPECT_EQ(sv[i], 0.0);
+}
+
+TEST(MohrCoulombMaterial, ElasticStepKeepsPdstrainAndMatchesHooke) {
+  const MohrCoulomb m = MohrCoulomb::from(mc_spec());
+  double sv[7];
+  m.initial_state(sv);
+  double s[4] = {-1e4, -1e4, -1e4, 0};
+  const double de[3] = {-1e-6, -1e-6, 0};
+  m.update(s, de, sv);
+  const double K = 1e7 / (3 * (1 - 0.6)), G = 1e7 / 2.6;
+  EXPECT_CLOSE(s[0], -1e4 + (K + 4 * G / 3) * -1e-6 + (K - 2 * G / 3) * -1e-6, 1e-8, 1e-12);
+  EXPECT_EQ(sv[6], 0.0);
+}
+
+TEST(MohrCoulombMaterial, ShearingToFailureAccumulatesPdstrainAndSoftens) {
+  const MohrCoulomb m = MohrCoulomb::from(mc_spec());
+  double sv[7];
+  m.initial_state(sv);
+  double s[4] = {-1e5, -1e5, -1e5, 0};
+  const double de[3] = {0, 0, 2e-3};  // simple shear increments
+  double last_pd = 0;
+  for (int i = 0; i < 60; ++i) {
+    m.update(s, de, sv);
+    EXPECT_GE(sv[6], last_pd);
+    last_pd = sv[6];
+  }
+  EXPECT_GT(sv[6], 0.05);  // past residual_pdstrain
+  // Next update applies the residual values (CB-Geo: softening before the predictor).
+  m.update(s, de, sv);
+  EXPECT_CLOSE(sv[0], m.phi_residual, 1e-15, 0);
+  EXPECT_CLOSE(sv[1], m.psi_residual, 1e-15, 0);
+  EXPECT_CLOSE(sv[2], 100.0, 1e-12, 0);
+  // The stress lies on the residual Mohr-Coulomb surface: (s1 - s3) + (s1 + s3) sin(phi) = 2 c cos(phi).
+  const double c = 0.5 * (s[0] + s[1]), r = std::hypot(0.5 * (s[0] - s[1]), s[3]);
+  const double s1 = std::max({c + r, s[2]}), s3 = std::min({c - r, s[2]});
+  EXPECT_CLOSE((s1 - s3) + (s1 + s3) * std::sin(sv[0]), 2 * 100 * std::cos(sv[0]), 1e-6 * 1e5, 0);
+}
+
+TEST(MohrCoulombMaterial, SofteningIsLinearBetweenPeakAndResidual) {
+  const MohrCoulomb m = MohrCoulomb::from(mc_spec());
+  double sv[7];
+  m.initial_state(sv);
+  sv[6] = 0.03;  // half way between 0.01 and 0.05
+  double s[4] = {-1e4, -1e4, -1e4, 0};
+  const double de[3] = {0, 0, 0};
+  m.update(s, de, sv);
+  EXPECT_CLOSE(sv[0], 0.5 * (m.phi_peak + m.phi_residual), 1e-15, 1e-14);
+  EXPECT_CLOSE(sv[2], 550.0, 1e-10, 0);
+}
+
+TEST(MohrCoulombMaterial, InvariantsInCbGeoConvention) {
+  double sv[7] = {};
+  const double s[4] = {-3e4, -1e4, -2e4, 0};
+  MohrCoulomb::set_invariants(s, sv);
+  EXPECT_CLOSE(sv[3], std::sqrt(3.0) * -2e4, 1e-8, 1e-12);  // epsilon = sqrt(3) p
+  const double j2 = ((2e4 * 2e4) + (1e4 * 1e4) + (1e4 * 1e4)) / 6.0;
+  EXPECT_CLOSE(sv[4], std::sqrt(2 * j2), 1e-8, 1e-12);  // rho = sqrt(2 J2)
+  EXPECT_CLOSE(sv[5], std::acos(0.0) / 3.0, 1e-12, 0);  // pure shear deviator: J3 = 0 -> theta = pi/6
+}
+
+}  // namespace

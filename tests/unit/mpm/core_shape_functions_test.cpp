@@ -1,0 +1,88 @@
+// Unit tests of mpm/core/shape_functions.hpp: linear hat functions (Sulsky et al. 1994) and uGIMP
+// (Bardenhagen & Kober 2004, eq. 32-33; CB-Geo quadrilateral_gimp_element.tcc).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mpm/core/shape_functions.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+using mpm::core::GimpShape;
+using mpm::core::LinearShape;
+
+template <class Shape>
+void check_partition_of_unity(double l) {
+  for (double s = 1.0; s <= 4.0; s += 0.0137) {
+    int base = 0;
+    double w[Shape::kWidth], dw[Shape::kWidth];
+    Shape::eval(s, l, 10, base, w, dw);
+    double sum = 0, dsum = 0, first = 0;
+    for (int a = 0; a < Shape::kWidth; ++a) {
+      sum += w[a];
+      dsum += dw[a];
+      first += w[a] * (base + a);  // reproduces linear fields: sum N_i x_i = x
+      EXPECT_GE(w[a], -1e-15);
+    }
+    EXPECT_CLOSE(sum, 1.0, 1e-14, 0);
+    EXPECT_CLOSE(dsum, 0.0, 1e-14, 0);
+    EXPECT_CLOSE(first, s, 1e-13, 0);
+  }
+}
+
+TEST(ShapeFunctions, LinearPartitionOfUnityAndLinearCompleteness) { check_partition_of_unity<LinearShape>(0.0); }
+
+TEST(ShapeFunctions, GimpPartitionOfUnityAndLinearCompleteness) {
+  for (double l : {0.05, 0.125, 0.25, 0.5}) check_partition_of_unity<GimpShape>(l);
+}
+
+TEST(ShapeFunctions, GimpGradientMatchesFiniteDifference) {
+  const double l = 0.125, eps = 1e-6;
+  for (double r = -1.3; r <= 1.3; r += 0.0173) {
+    double w0, d0, wp, dp, wm, dm;
+    GimpShape::node(r, l, w0, d0);
+    GimpShape::node(r + eps, l, wp, dp);
+    GimpShape::node(r - eps, l, wm, dm);
+    EXPECT_CLOSE(d0, (wp - wm) / (2 * eps), 1e-6, 0);
+  }
+}
+
+TEST(ShapeFunctions, GimpTendsToLinearForPointParticles) {
+  // Away from the nodes (|r| in (l, 1 - l)) uGIMP equals the hat function exactly; as l -> 0 it does
+  // everywhere.
+  for (double s = 2.05; s < 3.0; s += 0.1) {
+    int bl = 0, bg = 0;
+    double wl[2], dwl[2], wg[3], dwg[3];
+    LinearShape::eval(s, 0, 10, bl, wl, dwl);
+    GimpShape::eval(s, 1e-4, 10, bg, wg, dwg);
+    for (int a = 0; a < 3; ++a) {
+      const int node = bg + a;
+      const double expected = node == bl ? wl[0] : (node == bl + 1 ? wl[1] : 0.0);
+      EXPECT_CLOSE(wg[a], expected, 1e-12, 0);
+    }
+  }
+}
+
+TEST(ShapeFunctions, GimpValuesAtKnownPoints) {
+  // Particle at a node (r = 0): N = 1 - l/2; at r = 1: N = l/4 (overlap of the particle with the next cell).
+  const double l = 0.25;
+  double w, dw;
+  GimpShape::node(0.0, l, w, dw);
+  EXPECT_CLOSE(w, 1 - l / 2, 1e-15, 0);
+  EXPECT_CLOSE(dw, 0.0, 1e-15, 0);
+  GimpShape::node(1.0, l, w, dw);
+  EXPECT_CLOSE(w, l / 4, 1e-15, 0);
+  GimpShape::node(1.0 + l, l, w, dw);
+  EXPECT_CLOSE(w, 0.0, 1e-15, 0);
+}
+
+TEST(ShapeFunctions, LinearClampsToTheLastCell) {
+  int base = 0;
+  double w[2], dw[2];
+  LinearShape::eval(10.0, 0, 9, base, w, dw);  // a particle on the last node line stays in cell 9
+  EXPECT_EQ(base, 9);
+  EXPECT_CLOSE(w[1], 1.0, 1e-15, 0);
+}
+
+}  // namespace

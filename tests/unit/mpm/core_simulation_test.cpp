@@ -1,0 +1,225 @@
+// Unit tests of mpm::core::Simulation: CB-Geo's particle defaults, the time step, snapshots, exact
+// resume and determinism, particles leaving the grid, numerical and input errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "common/input_error.hpp"
+#include "mpm/core/simulation.hpp"
+#include "support/tolerance.hpp"
+#include "verification/mpm/mpm_test_decks.hpp"
+
+namespace {
+
+using namespace mpm_test;
+using mpm::core::Simulation;
+using mpm::io::ParticleRecord;
+
+/// A small Mohr-Coulomb column that collapses (K0 stresses, rough base, roller wall).
+Deck collapsing_column(mpm::io::Scheme scheme, CellType type, const std::string& smoothing = "none") {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 0.5, 16, 8, type);
+  deck.materials.push_back(mohr_coulomb(3, 1800, 5e6, 0.3, 30, 200, 0));
+  fill_block(deck, 0, 2, 0, 3, 2, 3);
+  for (auto& p : deck.particles) {
+    p.stress_yy = -1800 * 9.81 * (3 - p.coord_y);
+    p.stress_xx = p.stress_zz = 0.5 * p.stress_yy;
+  }
+  const auto& g = deck.grid;
+  deck.velocity_constraints.push_back({nodes_where(g, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
+  const auto base = nodes_where(g, [](double, double y) { return y <= 1e-9; });
+  deck.velocity_constraints.push_back({base, 1, 0.0});
+  deck.friction_constraints.push_back({base, 1, -1, 0.4});
+  deck.analysis.scheme = scheme;
+  deck.analysis.gravity = {0, -9.81};
+  deck.analysis.cfl = 0.5;
+  deck.analysis.dt = 1.0;
+  deck.analysis.stress_smoothing = smoothing;
+  return deck;
+}
+
+bool identical(const std::vector<ParticleRecord>& a, const std::vector<ParticleRecord>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(ParticleRecord)) == 0;
+}
+
+TEST(Simulation, AppliesCbGeoParticleDefaults) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Gimp16);
+  deck.materials.push_back(elastic(0, 2000, 1e6, 0.3));
+  fill_block(deck, 0, 1, 0, 1, 2, 0);  // 4 particles in cell (0, 0)
+  ParticleRecord lone{};
+  lone.id = 10;
+  lone.coord_x = 2.5;
+  lone.coord_y = 2.5;
+  deck.particles.push_back(lone);
+  deck.analysis.dt = 1e-3;
+  const Simulation sim(deck, 1);
+  const auto ps = sim.snapshot();
+  ASSERT_EQ(ps.size(), 5u);
+  EXPECT_EQ(ps[0].volume, 0.25);
+  EXPECT_EQ(ps[0].mass, 500.0);
+  EXPECT_EQ(ps[0].nsize_x, 1.0);
+  EXPECT_EQ(ps[4].id, 10);
+  EXPECT_EQ(ps[4].volume, 1.0);
+  EXPECT_EQ(ps[4].nsize_y, 2.0);
+  EXPECT_EQ(ps[4].nstate_vars, 0u);
+}
+
+TEST(Simulation, AutomaticTimeStepFromCfl) {
+  Deck deck = collapsing_column(mpm::io::Scheme::USL, CellType::Linear4);
+  const double K = 5e6 / (3 * 0.4), G = 5e6 / 2.6, cp = std::sqrt((K + 4 * G / 3) / 1800);
+  EXPECT_CLOSE(Simulation(deck, 1).dt(), 0.5 * 0.5 / cp, 0, 1e-14);
+  deck.analysis.dt = 1e-4;  // the deck's dt is an upper bound
+  EXPECT_EQ(Simulation(deck, 1).dt(), 1e-4);
+  deck.analysis.cfl = 0;
+  deck.first_step = 7;
+  const Simulation sim(deck, 1);
+  EXPECT_EQ(sim.step_index(), 7);
+  EXPECT_CLOSE(sim.time(), 7e-4, 1e-18, 1e-15);
+}
+
+TEST(Simulation, MohrCoulombStateVariablesInSnapshot) {
+  Simulation sim(collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16), 1);
+  for (int i = 0; i < 50; ++i) sim.step();
+  const auto ps = sim.snapshot();
+  double pd_max = 0;
+  for (const auto& p : ps) {
+    ASSERT_EQ(p.nstate_vars, 7u);
+    EXPECT_EQ(p.material_id, 3u);
+    EXPECT_CLOSE(p.svars[0], 30 * std::acos(-1.0) / 180, 1e-15, 0);
+    EXPECT_CLOSE(p.svars[3], std::sqrt(3.0) * (p.stress_xx + p.stress_yy + p.stress_zz) / 3, 1e-9, 1e-12);
+    pd_max = std::max(pd_max, p.svars[6]);
+  }
+  EXPECT_GT(pd_max, 0.0);  // the toe yields
+  for (std::size_t i = 1; i < ps.size(); ++i) EXPECT_LT(ps[i - 1].id, ps[i].id);
+}
+
+class Resume : public ::testing::TestWithParam<std::tuple<mpm::io::Scheme, CellType, std::string, int>> {};
+
+TEST_P(Resume, ContinuesBitIdentically) {
+  const auto [scheme, type, smoothing, threads] = GetParam();
+  const Deck deck = collapsing_column(scheme, type, smoothing);
+  Simulation full(deck, threads);
+  std::vector<ParticleRecord> middle;
+  for (int i = 0; i < 60; ++i) {
+    if (i == 25) middle = full.snapshot();
+    full.step();
+  }
+  Deck resumed_deck = deck;
+  resumed_deck.particles = middle;
+  resumed_deck.resumed = true;
+  resumed_deck.first_step = 25;
+  Simulation resumed(resumed_deck, threads);
+  EXPECT_TRUE(identical(resumed.snapshot(), middle));
+  while (resumed.step_index() < 60) resumed.step();
+  EXPECT_EQ(resumed.step_index(), full.step_index());
+  EXPECT_EQ(resumed.time(), full.time());
+  EXPECT_TRUE(identical(resumed.snapshot(), full.snapshot()));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SchemesShapesRemediesThreads, Resume,
+    ::testing::Values(std::make_tuple(mpm::io::Scheme::USF, CellType::Gimp16, std::string("none"), 1),
+                      std::make_tuple(mpm::io::Scheme::USL, CellType::Gimp16, std::string("none"), 2),
+                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Linear4, std::string("nodal_strain"), 2),
+                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Gimp16, std::string("cell_volumetric"), 2)));
+
+TEST(Simulation, DeterministicAtAFixedThreadCount) {
+  const Deck deck = collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16);
+  Simulation a(deck, 2), b(deck, 2), serial(deck, 1);
+  for (int i = 0; i < 40; ++i) {
+    a.step();
+    b.step();
+    serial.step();
+  }
+  EXPECT_TRUE(identical(a.snapshot(), b.snapshot()));
+  // Another thread count changes only the summation order: round-off differences.
+  const auto pa = a.snapshot(), ps = serial.snapshot();
+  for (std::size_t i = 0; i < pa.size(); ++i) EXPECT_CLOSE(pa[i].coord_x, ps[i].coord_x, 1e-9, 0);
+}
+
+TEST(Simulation, ParticleLeavingTheGridIsAnErrorNamingIt) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Linear4);
+  deck.materials.push_back(elastic(0, 1000, 1e5, 0.3));
+  fill_block(deck, 2, 3, 2, 3, 1, 0);
+  deck.particles[0].id = 56;
+  deck.particles[0].velocity_x = 20.0;  // leaves through x = 4 after a few steps
+  deck.analysis.dt = 0.01;
+  Simulation sim(deck, 1);
+  std::vector<ParticleRecord> last_good;
+  try {
+    for (int i = 0; i < 100; ++i) {
+      last_good = sim.snapshot();
+      sim.step();
+    }
+    FAIL() << "no error";
+  } catch (const common::NumericalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("particle 56 left the grid at (4."), std::string::npos) << what;
+    EXPECT_EQ(what.rfind("step ", 0), 0u) << what;
+  }
+  EXPECT_TRUE(identical(sim.snapshot(), last_good));  // the failed step left no trace
+}
+
+TEST(Simulation, ParticleLeavingTheGridIsRemovedWithoutLocate) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Linear4);
+  deck.materials.push_back(elastic(0, 1000, 1e5, 0.3));
+  fill_block(deck, 0, 1, 2, 3, 1, 0);
+  fill_block(deck, 2, 3, 2, 3, 1, 0);
+  deck.particles[1].velocity_x = 20.0;
+  deck.analysis.dt = 0.01;
+  deck.analysis.locate_particles = false;
+  Simulation sim(deck, 1);
+  for (int i = 0; i < 20; ++i) sim.step();
+  ASSERT_EQ(sim.particle_count(), 1u);
+  EXPECT_EQ(sim.snapshot()[0].id, 0);
+}
+
+TEST(Simulation, RunawayVelocityIsAnErrorNamingStepParticleAndField) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Linear4);
+  deck.materials.push_back(elastic(0, 1000, 1e5, 0.3));
+  fill_block(deck, 1, 3, 1, 3, 2, 0);
+  deck.particles[5].velocity_y = 500.0;  // more than one cell per step
+  deck.analysis.dt = 0.01;
+  deck.first_step = 1234;
+  Simulation sim(deck, 2);
+  try {
+    sim.step();
+    FAIL() << "no error";
+  } catch (const common::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("step 1234: particle 5 velocity runaway"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(sim.step_index(), 1234);
+}
+
+TEST(Simulation, InputErrorsNameTheProblem) {
+  Deck deck = collapsing_column(mpm::io::Scheme::USF, CellType::Linear4);
+  Deck bad_material = deck;
+  bad_material.particles[3].material_id = 9;
+  try {
+    Simulation sim(bad_material, 1);
+    FAIL();
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("material_id 9"), std::string::npos) << e.what();
+  }
+  Deck outside = deck;
+  outside.particles[0].coord_x = -1;
+  EXPECT_THROW(Simulation(outside, 1), common::InputError);
+  Deck smoothing = deck;
+  smoothing.analysis.stress_smoothing = "bilateral";
+  try {
+    Simulation sim(smoothing, 1);
+    FAIL();
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("analysis.stress_smoothing"), std::string::npos) << e.what();
+  }
+  Deck gimp_without_halo = deck;
+  gimp_without_halo.grid.cell_type = CellType::Gimp16;
+  EXPECT_THROW(Simulation(gimp_without_halo, 1), common::InputError);
+}
+
+}  // namespace
