@@ -30,6 +30,8 @@ struct LinearSolver::Impl {
 LinearSolver::LinearSolver(SolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {
   // Plain LL^T (supernodal where CHOLMOD chooses), as a banded/profile Cholesky would compute.
   impl_->llt.setMode(Eigen::CholmodSupernodalLLt);
+  // No iterative refinement in UMFPACK's solve: a direct LU solve, as OpenSees' UmfPack/BandGeneral do.
+  impl_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
 }
 LinearSolver::~LinearSolver() = default;
 
