@@ -64,8 +64,13 @@ nlohmann::ordered_json totals_json(const TransferTotals& t) {
           {"potential_energy", t.potential_energy}};
 }
 
+/// Wall-clock seconds of the phases, for the report.
+struct Timing {
+  double read = 0, map = 0, report_deck = 0, write_text = 0, write_h5 = 0;
+};
+
 void print_report(std::ostream& out, const AssembledState& a, const TransferReport& r, const DeckText& d,
-                  const CliOptions& o, const std::filesystem::path& outdir) {
+                  const CliOptions& o, const std::filesystem::path& outdir, const Timing& t) {
   out << "fem2mpm: FEM state at t = " << fmt(a.state.time, 9) << " s -> " << r.particle_count << " particles ("
       << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd << "), stress recovery "
       << (o.recovery == "spr" ? "SPR (Zienkiewicz-Zhu)" : "inverse-distance weighting") << "\n";
@@ -89,6 +94,8 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
       << " s, nsteps " << d.nsteps << ", output every " << d.output_steps << " steps\n";
   out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, particles.txt, "
       << "report.json in " << outdir.string() << "\n";
+  out << "  time: read " << fmt(t.read, 3) << " s, map " << fmt(t.map, 3) << " s, report + deck " << fmt(t.report_deck, 3)
+      << " s, write text " << fmt(t.write_text, 3) << " s, write HDF5 " << fmt(t.write_h5, 3) << " s\n";
   out << "  run: mpm -f " << outdir.string() << "/ -i mpm.json\n";
 }
 
@@ -138,6 +145,14 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (deck.uuid.empty() || deck.uuid.find('/') != std::string::npos)
     throw common::InputError("--uuid", "expected a plain name (no '/'), got '" + deck.uuid + "'");
 
+  using Clock = std::chrono::steady_clock;
+  auto lap = [last = Clock::now()]() mutable {
+    const auto now = Clock::now();
+    const double s = std::chrono::duration<double>(now - last).count();
+    last = now;
+    return s;
+  };
+  Timing timing;
   // 1. Read and check everything (no output yet).
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
@@ -151,11 +166,14 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
                                          "(too distorted to transfer; choose an earlier --time): " + list);
   }
 
+  timing.read = lap();
   // 2. Map.
   const auto nodal = recover_nodal_stress(state, mo.recovery);
   const auto particles = generate_particles(state, nodal, mo);
+  timing.map = lap();
   const TransferReport report = make_report(state, nodal, particles);
   const DeckText d = build_deck(state, particles, deck);
+  timing.report_deck = lap();
 
   // 3. Write: text files to temporary names, the HDF5 file (itself atomic), then rename the rest.
   const std::filesystem::path outdir = o.out;
@@ -190,9 +208,11 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   text("entity_sets.json", d.entity_sets_json);
   text("particles.txt", d.particles_txt);
   text("report.json", rj.dump(2) + "\n");
+  timing.write_text = lap();
   mpm::io::write_particle_table(outdir / d.particle_file, particles);
+  timing.write_h5 = lap();
   for (auto& f : files) f->commit();
-  if (!o.quiet) print_report(out, assembled, report, d, o, outdir);
+  if (!o.quiet) print_report(out, assembled, report, d, o, outdir, timing);
   return 0;
 }
 

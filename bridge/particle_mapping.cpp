@@ -20,7 +20,7 @@ unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& s, double* svar
   const double j2 = 0.5 * (dx * dx + dy * dy + dz * dz) + txy * txy + tyz * tyz + txz * txz;
   const double j3 = dx * dy * dz - dz * txy * txy + 2 * txy * tyz * txz - dx * tyz * tyz - dy * txz * txz;
   double cos3 = 0;
-  if (j2 > 1e-12) cos3 = std::clamp(1.5 * std::sqrt(3.0) * j3 / std::pow(j2, 1.5), -1.0, 1.0);
+  if (j2 > 1e-12) cos3 = std::clamp(1.5 * std::sqrt(3.0) * j3 / (j2 * std::sqrt(j2)), -1.0, 1.0);
   svars[0] = m.friction;
   svars[1] = m.dilation;
   svars[2] = m.cohesion;
@@ -69,8 +69,7 @@ std::vector<mpm::io::ParticleRecord> generate_particles(const TransferState& sta
     for (std::size_t q = 0; q < per_element; ++q) {
       const Point& pt = points[q];
       const auto& N = pt.shape;
-      mpm::io::ParticleRecord& r = out[e * per_element + q];
-      r = mpm::io::ParticleRecord{};
+      mpm::io::ParticleRecord& r = out[e * per_element + q];  // value-initialised by the vector
       r.id = static_cast<std::int64_t>(e * per_element + q);
       double volume = 0, ref_volume = 0;
       if (options.volume_split == VolumeSplit::Jacobian) {
