@@ -138,6 +138,13 @@ void write_xdmf_datasets(hid_t file, std::span<const ParticleRecord> ps, const s
   scalar("strain_yy", [](auto& p) { return p.strain_yy; });
   scalar("gamma_xy", [](auto& p) { return p.gamma_xy; });
   scalar("epsilon_v", [](auto& p) { return p.epsilon_v; });
+  // Polyvertex connectivity 0..n-1 (explicit, so readers that do not default it still read the grid).
+  {
+    std::vector<std::int64_t> connectivity(n);
+    for (std::size_t k = 0; k < n; ++k) connectivity[k] = static_cast<std::int64_t>(k);
+    const hsize_t dims[1] = {n};
+    ok = ok && H5LTmake_dataset(group, "connectivity", 1, dims, H5T_NATIVE_INT64, connectivity.data()) >= 0;
+  }
   // CB-Geo's Mohr-Coulomb keeps pdstrain as its 7th state variable.
   scalar("pdstrain", [](auto& p) { return p.nstate_vars >= 7 ? p.svars[6] : 0.0; });
   H5Gclose(group);
@@ -249,7 +256,10 @@ void ResultsWriter::write_xdmf() const {
     };
     os << "   <Grid Name=\"step " << e.step << "\" GridType=\"Uniform\">\n"
        << "    <Time Value=\"" << e.time << "\"/>\n"
-       << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\"/>\n"
+       << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">\n"
+       << "     <DataItem Dimensions=\"" << n << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5
+       << ":/xdmf/connectivity</DataItem>\n"
+       << "    </Topology>\n"
        << "    <Geometry GeometryType=\"XYZ\">\n";
     item(n + " 3", "coordinates");
     os << "    </Geometry>\n";
