@@ -1,0 +1,117 @@
+// Unit tests: the linear solver (UMFPACK / CHOLMOD, singular systems, factorization reuse), time series,
+// convergence tests and the parsers of the analysis chain.
+#include <gtest/gtest.h>
+
+#include "common/input_error.hpp"
+#include "fem_tcl/analysis/convergence_test.hpp"
+#include "fem_tcl/analysis/integrator.hpp"
+#include "fem_tcl/analysis/linear_solver.hpp"
+#include "fem_tcl/domain/time_series.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+using fem::analysis::LinearSolver;
+using fem::analysis::SolverKind;
+
+Eigen::SparseMatrix<double> tridiagonal(int n, double diag, double off) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, diag);
+    if (i + 1 < n) { t.emplace_back(i, i + 1, off); t.emplace_back(i + 1, i, off); }
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+TEST(LinearSolver, BothKindsSolveAndReuseTheFactorization) {
+  for (SolverKind kind : {SolverKind::General, SolverKind::SymmetricPositiveDefinite}) {
+    LinearSolver s(kind);
+    s.set_pattern(tridiagonal(5, 2.0, -1.0));
+    s.factor();
+    Eigen::VectorXd b = Eigen::VectorXd::Ones(5), x;
+    s.solve(b, x);
+    const Eigen::VectorXd expected = (Eigen::VectorXd(5) << 2.5, 4.0, 4.5, 4.0, 2.5).finished();
+    EXPECT_LT((x - expected).norm(), 1e-12);
+    s.factor();  // same values: no new factorization
+    EXPECT_EQ(s.factorizations(), 1);
+    s.matrix().valuePtr()[0] = 3.0;
+    s.factor();
+    EXPECT_EQ(s.factorizations(), 2);
+  }
+}
+
+TEST(LinearSolver, SingularSystemIsANumericalError) {
+  for (SolverKind kind : {SolverKind::General, SolverKind::SymmetricPositiveDefinite}) {
+    LinearSolver s(kind);
+    Eigen::SparseMatrix<double> A(2, 2);  // two equal rows
+    A.insert(0, 0) = 1.0; A.insert(0, 1) = 1.0; A.insert(1, 0) = 1.0; A.insert(1, 1) = 1.0;
+    s.set_pattern(A);
+    EXPECT_THROW(s.factor(), common::NumericalError);
+  }
+}
+
+TEST(LinearSolver, SystemNamesMapOntoTwoSolvers) {
+  SolverKind kind{};
+  for (const char* name : {"BandGeneral", "SparseGeneral", "UmfPack", "FullGeneral"}) {
+    ASSERT_TRUE(fem::analysis::solver_kind_for(name, kind));
+    EXPECT_EQ(kind, SolverKind::General);
+  }
+  for (const char* name : {"BandSPD", "ProfileSPD", "SparseSYM"}) {
+    ASSERT_TRUE(fem::analysis::solver_kind_for(name, kind));
+    EXPECT_EQ(kind, SolverKind::SymmetricPositiveDefinite);
+  }
+  EXPECT_FALSE(fem::analysis::solver_kind_for("Magic", kind));
+}
+
+TEST(TimeSeries, PathInterpolatesAndIsZeroOutside) {
+  common::CommandArgs args("timeSeries", "", {"Path", "3", "-time", "0 0.1 0.3", "-values", "0 1 -1", "-factor", "2"});
+  auto ts = fem::domain::parse_time_series(args);
+  EXPECT_EQ(ts->tag(), 3);
+  EXPECT_CLOSE(ts->factor(0.05), 1.0, 1e-15, 1e-14);
+  EXPECT_CLOSE(ts->factor(0.2), 0.0, 1e-15, 1e-14);
+  EXPECT_CLOSE(ts->factor(0.25), -1.0, 1e-15, 1e-14);
+  EXPECT_EQ(ts->factor(0.31), 0.0);
+  EXPECT_EQ(ts->factor(-0.1), 0.0);
+  common::CommandArgs dt("timeSeries", "", {"Path", "4", "-dt", "0.5", "-values", "1 3"});
+  EXPECT_CLOSE(fem::domain::parse_time_series(dt)->factor(0.25), 2.0, 1e-15, 1e-14);
+  common::CommandArgs lin("timeSeries", "", {"Linear", "1", "-factor", "3"});
+  EXPECT_CLOSE(fem::domain::parse_time_series(lin)->factor(0.5), 1.5, 1e-15, 1e-14);
+  common::CommandArgs bad("timeSeries", "", {"Path", "5", "-time", "0 1", "-values", "1 2 3"});
+  EXPECT_THROW(fem::domain::parse_time_series(bad), common::InputError);
+  common::CommandArgs unknown("timeSeries", "", {"Sine", "5"});
+  EXPECT_THROW(fem::domain::parse_time_series(unknown), common::InputError);
+}
+
+TEST(ConvergenceTest, DefinitionsAndIterationLimit) {
+  Eigen::VectorXd dU(2), R(2);
+  dU << 3.0, 4.0;
+  R << 1.0, -2.0;
+  fem::analysis::ConvergenceTest disp({fem::analysis::TestType::NormDispIncr, 5.0, 3, 0});
+  disp.start();
+  EXPECT_EQ(disp.test(dU, R), 1);
+  EXPECT_DOUBLE_EQ(disp.last_norm(), 5.0);
+  fem::analysis::ConvergenceTest energy({fem::analysis::TestType::EnergyIncr, 1e-3, 2, 5});
+  energy.start();
+  EXPECT_EQ(energy.test(dU, R), -1);
+  EXPECT_DOUBLE_EQ(energy.last_norm(), 0.5 * 5.0);
+  EXPECT_EQ(energy.test(dU, R), -2);  // maxIter reached
+  fem::analysis::ConvergenceTest unbalance({fem::analysis::TestType::NormUnbalance, 1e-3, 2, 5});
+  unbalance.start();
+  unbalance.test(dU, R);
+  EXPECT_DOUBLE_EQ(unbalance.last_norm(), std::sqrt(5.0));
+}
+
+TEST(Integrator, HHTDefaultsAndBadInput) {
+  common::CommandArgs hht("integrator", "", {"HHT", "0.9"});
+  const auto c = fem::analysis::parse_integrator(hht);
+  EXPECT_DOUBLE_EQ(c.gamma, 1.5 - 0.9);
+  EXPECT_DOUBLE_EQ(c.beta, (2.0 - 0.9) * (2.0 - 0.9) / 4.0);
+  common::CommandArgs bad("integrator", "", {"Newmark", "0.5"});
+  EXPECT_THROW(fem::analysis::parse_integrator(bad), common::InputError);
+  common::CommandArgs extra("integrator", "", {"LoadControl", "0.1", "junk"});
+  EXPECT_THROW(fem::analysis::parse_integrator(extra), common::InputError);
+}
+
+}  // namespace

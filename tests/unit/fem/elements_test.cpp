@@ -1,0 +1,142 @@
+// Unit tests: ElasticIsotropic, SSPquad, FourNodeQuad (one class each; properties any correct
+// implementation must have: rigid-body modes, symmetry, mass and load totals, rejected geometry).
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "fem_tcl/domain/domain.hpp"
+#include "fem_tcl/elements/four_node_quad.hpp"
+#include "fem_tcl/elements/ssp_quad.hpp"
+#include "fem_tcl/materials/elastic_isotropic.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+using fem::domain::Domain;
+using fem::domain::Matrix8;
+using fem::domain::Vector8;
+using fem::materials::ElasticIsotropic;
+using fem::materials::PlaneType;
+
+TEST(ElasticIsotropic, PlaneStrainAndPlaneStressMatrices) {
+  const double E = 200.0, nu = 0.25;
+  ElasticIsotropic strain(1, E, nu, 2.0, PlaneType::PlaneStrain);
+  const double c = E / ((1 + nu) * (1 - 2 * nu));
+  EXPECT_CLOSE(strain.tangent()(0, 0), c * (1 - nu), 0.0, 1e-14);
+  EXPECT_CLOSE(strain.tangent()(0, 1), c * nu, 0.0, 1e-14);
+  EXPECT_CLOSE(strain.tangent()(2, 2), E / (2 * (1 + nu)), 0.0, 1e-14);
+  ElasticIsotropic stress(1, E, nu, 2.0, PlaneType::PlaneStress);
+  EXPECT_CLOSE(stress.tangent()(0, 0), E / (1 - nu * nu), 0.0, 1e-14);
+  EXPECT_CLOSE(stress.tangent()(0, 1), E * nu / (1 - nu * nu), 0.0, 1e-14);
+  strain.set_trial_strain(fem::materials::Vector3(1e-3, -2e-3, 5e-4));
+  const auto s = strain.stress();
+  EXPECT_CLOSE(s[0], c * ((1 - nu) * 1e-3 + nu * -2e-3), 1e-15, 1e-13);
+  EXPECT_CLOSE(strain.stress_3d()[2], nu * (s[0] + s[1]), 1e-15, 1e-13);
+  EXPECT_EQ(strain.density(), 2.0);
+}
+
+TEST(ElasticIsotropic, RejectsBadInputAndUpdatesParameters) {
+  EXPECT_THROW(ElasticIsotropic(1, -1.0, 0.3, 0.0), common::InputError);
+  EXPECT_THROW(ElasticIsotropic(1, 1.0, 0.5, 0.0), common::InputError);
+  ElasticIsotropic m(3, 100.0, 0.2, 1.0);
+  EXPECT_TRUE(m.set_parameter("E", 300.0));
+  EXPECT_FALSE(m.set_parameter("cohesion", 1.0));
+  EXPECT_EQ(m.youngs_modulus(), 300.0);
+  const auto j = m.to_json();
+  EXPECT_EQ(j["type"], "ElasticIsotropicMaterial");
+  EXPECT_EQ(j["name"], "3");
+  common::CommandArgs args("nDMaterial ElasticIsotropic", "usage", {"4", "1e3", "0.3"});
+  auto parsed = fem::materials::parse_elastic_isotropic(args);
+  EXPECT_EQ(parsed->tag(), 4);
+  EXPECT_EQ(parsed->density(), 0.0);
+  common::CommandArgs bad("nDMaterial ElasticIsotropic", "usage", {"4", "abc", "0.3"});
+  EXPECT_THROW(fem::materials::parse_elastic_isotropic(bad), common::InputError);
+}
+
+struct QuadFixture {
+  Domain domain;
+  std::array<fem::domain::Node*, 4> nodes{};
+  ElasticIsotropic material{1, 1000.0, 0.3, 2.0};
+  // a distorted, counter-clockwise quadrilateral
+  explicit QuadFixture(bool clockwise = false) {
+    const double x[4] = {0.0, 2.0, 2.3, -0.2};
+    const double y[4] = {0.0, 0.3, 1.7, 1.2};
+    for (int i = 0; i < 4; ++i) {
+      const int k = clockwise ? 3 - i : i;
+      nodes[i] = &domain.add_node(i + 1, x[k], y[k], "test");
+    }
+  }
+  double area() const {
+    double a = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      const auto& p = nodes[i]->crd;
+      const auto& q = nodes[(i + 1) % 4]->crd;
+      a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+    }
+    return a;
+  }
+};
+
+template <class E>
+void expect_element_properties(E& e, double area, double thickness, double rho) {
+  const Matrix8 K = e.tangent_stiffness();
+  EXPECT_LT((K - K.transpose()).norm(), 1e-12 * K.norm());
+  Eigen::SelfAdjointEigenSolver<Matrix8> eig(K);
+  const auto lambda = eig.eigenvalues();
+  // three rigid-body modes, five deformation modes (SSPquad: hourglass stabilized, no spurious zero modes)
+  for (int i = 0; i < 3; ++i) EXPECT_LT(std::abs(lambda[i]), 1e-10 * lambda[7]);
+  EXPECT_GT(lambda[3], 1e-6 * lambda[7]);
+  Vector8 rigid;
+  const double theta = 1e-3;
+  for (int a = 0; a < 4; ++a) {  // translation + infinitesimal rotation
+    rigid[2 * a] = 0.1 - theta * e.nodes()[a]->crd[1];
+    rigid[2 * a + 1] = -0.2 + theta * e.nodes()[a]->crd[0];
+  }
+  EXPECT_LT((K * rigid).norm(), 1e-10 * K.norm());
+  const Vector8 m = e.lumped_mass();
+  EXPECT_CLOSE(m.sum(), 2.0 * rho * area * thickness, 1e-12, 1e-12);
+}
+
+TEST(SSPquad, StiffnessMassAndBodyForce) {
+  QuadFixture f;
+  fem::elements::SSPquad e(1, f.nodes, f.material, PlaneType::PlaneStrain, 0.5, 0.0, -10.0);
+  expect_element_properties(e, f.area(), 0.5, 2.0);
+  e.update();
+  const Vector8 r = e.resisting_force();  // zero displacement: minus the body force
+  double fy = 0.0;
+  for (int a = 0; a < 4; ++a) fy += r[2 * a + 1];
+  EXPECT_CLOSE(fy, 10.0 * f.area() * 0.5, 1e-12, 1e-12);
+  const auto stress = e.response({"stress"});
+  ASSERT_TRUE(stress.has_value());
+  EXPECT_EQ(stress->size(), 3u);
+  EXPECT_FALSE(e.response({"bogus"}).has_value());
+}
+
+TEST(SSPquad, RejectsClockwiseNodes) {
+  QuadFixture f(true);
+  EXPECT_THROW(fem::elements::SSPquad(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0),
+               common::InputError);
+}
+
+TEST(FourNodeQuad, StiffnessMassAndResponses) {
+  QuadFixture f;
+  fem::elements::FourNodeQuad e(1, f.nodes, f.material, PlaneType::PlaneStress, 0.2, 0.0, 0.0, 0.0, 0.0);
+  expect_element_properties(e, f.area(), 0.2, 2.0);
+  // the element density, when given, replaces the material's (OpenSees FourNodeQuad::getMass)
+  fem::elements::FourNodeQuad heavy(2, f.nodes, f.material, PlaneType::PlaneStress, 0.2, 0.0, 5.0, 0.0, 0.0);
+  EXPECT_CLOSE(heavy.lumped_mass().sum(), 2.0 * 5.0 * f.area() * 0.2, 1e-12, 1e-12);
+  e.update();
+  EXPECT_EQ(e.response({"stresses"})->size(), 12u);
+  EXPECT_EQ(e.response({"strains"})->size(), 12u);
+  EXPECT_EQ(e.response({"forces"})->size(), 8u);
+  EXPECT_EQ(e.response({"material", "3", "stress"})->size(), 3u);
+  EXPECT_FALSE(e.response({"material", "5", "stress"}).has_value());
+}
+
+TEST(FourNodeQuad, RejectsClockwiseNodes) {
+  QuadFixture f(true);
+  EXPECT_THROW(fem::elements::FourNodeQuad(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0, 0, 0, 0),
+               common::InputError);
+}
+
+}  // namespace

@@ -1,0 +1,175 @@
+// Unit tests: the Tcl command layer. Bad input (wrong argument count, unknown command/option, missing or
+// duplicate tags, clockwise or collapsed elements, singular systems) gives a Tcl error whose message
+// names the command and tag and carries the usage line; fem_tcl itself reports uncaught errors as
+// "file:line: message" with exit status 1 after flushing the recorders.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "fem_tcl/tcl/interpreter.hpp"
+#include "support/recorder_compare.hpp"
+#include "support/tolerance.hpp"
+
+namespace {
+
+using fem::tcl::Interpreter;
+
+constexpr const char* kTwoElementModel = R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0
+node 2 1 0
+node 3 2 0
+node 4 0 1
+node 5 1 1
+node 6 2 1
+fix 1 1 1
+fix 4 1 1
+nDMaterial ElasticIsotropic 1 1000.0 0.25 2.0
+element quad 1 1 2 5 4 1.0 PlaneStrain 1
+element SSPquad 2 2 3 6 5 1 PlaneStrain 1.0
+)tcl";
+
+/// Evaluates `script` and returns the error message ("" when it succeeded).
+std::string error_of(Interpreter& interp, const std::string& script) {
+  std::string message;
+  return interp.eval_script(script, "test", message) ? std::string() : message;
+}
+
+TEST(TclCommands, WrongArgumentCountNamesCommandTagAndUsage) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  const std::string e = error_of(interp, "node 7 1.0");
+  EXPECT_NE(e.find("node 7"), std::string::npos) << e;
+  EXPECT_NE(e.find("usage: node tag x y"), std::string::npos) << e;
+  const std::string e2 = error_of(interp, "element SSPquad 9 1 2 5 4 1 PlaneStrain");
+  EXPECT_NE(e2.find("element SSPquad 9"), std::string::npos) << e2;
+  EXPECT_NE(e2.find("usage: element SSPquad tag"), std::string::npos) << e2;
+  EXPECT_NE(error_of(interp, "fix 2 1").find("usage: fix nodeTag f1 f2"), std::string::npos);
+}
+
+TEST(TclCommands, UnknownCommandOptionAndTypes) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  EXPECT_NE(error_of(interp, "nodeDisplacement 1").find("invalid command name"), std::string::npos);
+  EXPECT_NE(error_of(interp, "recorder Node -file x.out -bogus -node 1 -dof 1 disp").find("unknown option '-bogus'"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "nDMaterial Elastic 5 1 0.3").find("unknown material type 'Elastic'"), std::string::npos);
+  EXPECT_NE(error_of(interp, "element SSPquad 9 1 2 5 4 1 PlaneStrainX 1.0").find("PlaneStrain or PlaneStress"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "system Magic").find("unknown system 'Magic'"), std::string::npos);
+  EXPECT_NE(error_of(interp, "algorithm Newtonian").find("unknown algorithm"), std::string::npos);
+}
+
+TEST(TclCommands, MissingAndDuplicateTags) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  EXPECT_NE(error_of(interp, "node 3 5 5").find("node 3 already exists"), std::string::npos);
+  EXPECT_NE(error_of(interp, "element quad 1 1 2 5 4 1.0 PlaneStrain 1").find("element 1 already exists"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "nDMaterial ElasticIsotropic 1 10 0.2").find("nDMaterial 1 already exists"),
+            std::string::npos);
+  const std::string missing_node = error_of(interp, "element quad 3 1 2 50 4 1.0 PlaneStrain 1");
+  EXPECT_NE(missing_node.find("element quad 3"), std::string::npos) << missing_node;
+  EXPECT_NE(missing_node.find("node 50 does not exist"), std::string::npos) << missing_node;
+  EXPECT_NE(error_of(interp, "element quad 3 1 2 5 4 1.0 PlaneStrain 8").find("nDMaterial 8 does not exist"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "nodeDisp 77").find("node 77 does not exist"), std::string::npos);
+  EXPECT_NE(error_of(interp, "eleResponse 77 stress").find("element 77 does not exist"), std::string::npos);
+  EXPECT_NE(error_of(interp, "pattern Plain 1 42 {}").find("timeSeries 42 does not exist"), std::string::npos);
+  EXPECT_NE(error_of(interp, "load 1 1 1").find("only allowed inside"), std::string::npos);
+}
+
+TEST(TclCommands, ClockwiseAndCollapsedElementsAreRejected) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  const std::string cw = error_of(interp, "element SSPquad 3 1 4 5 2 1 PlaneStrain 1.0");
+  EXPECT_NE(cw.find("element SSPquad 3"), std::string::npos) << cw;
+  EXPECT_NE(cw.find("clockwise"), std::string::npos) << cw;
+  EXPECT_NE(cw.find("usage:"), std::string::npos) << cw;
+  EXPECT_NE(error_of(interp, "element quad 3 1 4 5 2 1.0 PlaneStrain 1").find("clockwise"), std::string::npos);
+  EXPECT_NE(error_of(interp, "element quad 3 1 2 2 4 1.0 PlaneStrain 1").find("collapsed"), std::string::npos);
+  // the failed commands left no element behind
+  std::string message;
+  ASSERT_TRUE(interp.eval_script("set tags [getEleTags]", "test", message)) << message;
+  EXPECT_EQ(error_of(interp, "if {$tags ne {1 2}} { error \"tags $tags\" }"), "");
+}
+
+TEST(TclCommands, SingularSystemReturnsNegativeAndKeepsTheLastState) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0
+node 2 1 0
+node 3 1 1
+node 4 0 1
+nDMaterial ElasticIsotropic 1 1000.0 0.25
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+fix 1 0 1
+fix 2 0 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 3 1.0 0.0 }
+constraints Plain
+numberer Plain
+system BandGeneral
+test NormDispIncr 1e-10 5
+algorithm Newton
+integrator LoadControl 1.0
+analysis Static
+set ok [analyze 1]
+)tcl"), "");
+  std::string message;
+  EXPECT_TRUE(interp.eval_script("if {$ok >= 0} { error \"analyze returned $ok\" }", "test", message)) << message;
+  // the state is the last committed one (zero), not garbage
+  ASSERT_TRUE(interp.eval_script("set u [nodeDisp 3 1]", "test", message));
+  EXPECT_TRUE(interp.eval_script("if {$u != 0.0} { error \"u = $u\" }", "test", message)) << message;
+  EXPECT_TRUE(interp.eval_script("if {[getTime] != 0.0} { error \"time [getTime]\" }", "test", message)) << message;
+}
+
+TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitOneAndFlushedRecorders) {
+  test_support::ScratchDir dir("fem_tcl_uncaught");
+  {
+    std::ofstream script(dir.path() / "bad.tcl");
+    script << kTwoElementModel
+           << "recorder Node -file d.out -time -node 3 6 -dof 1 2 disp\n"
+              "timeSeries Linear 1\n"
+              "pattern Plain 1 1 { load 6 0.0 -1.0 }\n"
+              "constraints Plain; numberer Plain; system UmfPack; test NormDispIncr 1e-12 5; algorithm Newton\n"
+              "integrator LoadControl 0.5\n"
+              "analysis Static\n"
+              "analyze 2\n"
+              "nodeDisp 99\n";
+  }
+  const int status = test_support::run_fem_tcl(GEOFLOW_BIN_DIR, dir.path(), "bad.tcl");
+  EXPECT_EQ(status, 1);
+  const std::string err = test_support::read_text(dir.path() / "stderr.txt");
+  EXPECT_NE(err.find("bad.tcl:21: nodeDisp 99: node 99 does not exist"), std::string::npos) << err;
+  const auto rows = test_support::read_numeric_table(dir.path() / "d.out");
+  ASSERT_EQ(rows.size(), 2u);  // both committed steps are on disk
+  EXPECT_EQ(rows[1].size(), 5u);
+}
+
+TEST(FemTclExecutable, ArgvStdinPutsAndNodeRecorderWithoutDof) {
+  test_support::ScratchDir dir("fem_tcl_argv");
+  {
+    std::ofstream script(dir.path() / "args.tcl");
+    script << "puts stdout \"argc=$argc argv=$argv argv0=[file tail $argv0]\"\n"
+              "puts \"to stderr\"\n"
+              "model basic -ndm 2 -ndf 2\nnode 1 0 0\n"
+              "recorder Node -file none.out -node 1 disp\n"
+              "record\n";
+  }
+  ASSERT_EQ(test_support::run_fem_tcl(GEOFLOW_BIN_DIR, dir.path(), "args.tcl", "a b"), 0);
+  EXPECT_EQ(test_support::read_text(dir.path() / "stdout.txt"), "argc=2 argv=a b argv0=args.tcl\n");
+  const std::string err = test_support::read_text(dir.path() / "stderr.txt");
+  EXPECT_NE(err.find("to stderr"), std::string::npos);
+  EXPECT_NE(err.find("no -dof given"), std::string::npos) << err;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "none.out"));
+  EXPECT_EQ(std::filesystem::file_size(dir.path() / "none.out"), 0u);
+  // no script: commands come from standard input
+  const std::string cmd = "cd '" + dir.path().string() + "' && echo 'puts stdout [expr {6*7}]' | '" +
+                          std::string(GEOFLOW_BIN_DIR) + "/fem_tcl' > stdin_out.txt";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(test_support::read_text(dir.path() / "stdin_out.txt"), "42\n");
+}
+
+}  // namespace
