@@ -10,7 +10,7 @@ namespace constitutive {
 namespace {
 
 // Yield planes in sorted principal space (s1 >= s2 >= s3), each  m . s <= r, with plastic flow along n
-// ([SPO] eqs. (8.40)-(8.44); [CDA] sec. 3):
+// ([SPO] sec. 8.2; [CDA]):
 //   0 main  (s1, s3)   m = (1+sin phi, 0, -(1-sin phi)),  r = 2 c cos phi
 //   1 TC    (s2, s3)   m = (0, 1+sin phi, -(1-sin phi))   -- coincides with main on s1 = s2
 //   2 TE    (s1, s2)   m = (1+sin phi, -(1-sin phi), 0)   -- coincides with main on s2 = s3
@@ -52,7 +52,7 @@ Planes make_planes(const IsotropicElasticity& el, const MohrCoulombStrength& st)
   p.r[kMain] = p.r[kTC] = p.r[kTE] = r_shear;
   p.apex = sf > 0.0;
   p.apex_stress = p.apex ? st.cohesion * cf / sf : std::numeric_limits<double>::infinity();
-  // Rankine cutoff clamped at the apex: at or above it the pyramid already bounds s1 ([CDA] sec. 5).
+  // Rankine cutoff clamped at the apex: at or above it the pyramid already bounds s1 ([CDA]).
   const double t = st.tension_cutoff;
   p.tension = tension_active(sf, cf, st);
   for (int i = 0; i < 3; ++i) {
@@ -112,8 +112,8 @@ struct PrincipalResult {
   int count;                  ///< 0 = elastic; -1 = a vertex reached through a 3-plane set or the apex
 };
 
-/// One active-set candidate: solve sum_l (m_j . D n_l) dgamma_l = m_j . s_trial - r_j ([SPO] eq. (8.47),
-/// [CDA] eq. (18)-(27)), then check dgamma >= 0, the principal order and every other plane.
+/// One active-set candidate: solve sum_l (m_j . D n_l) dgamma_l = m_j . s_trial - r_j ([SPO] sec. 8.2,
+/// [CDA]), then check dgamma >= 0, the principal order and every other plane.
 /// Returns the violation measure (<= 0 when admissible); the stress in `out`.
 double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* ids, int k, double tol,
                       double gamma_scale, Eigen::Vector3d& out) {
@@ -158,7 +158,7 @@ double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* 
   return violation - tol;
 }
 
-/// Tension cutoff in force: finite and below the apex c cot(phi) ([CDA] sec. 5).
+/// Tension cutoff in force: finite and below the apex c cot(phi) ([CDA]).
 bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
   const double t = st.tension_cutoff;
   if (!std::isfinite(t)) return false;
@@ -189,7 +189,7 @@ PrincipalResult principal_return(const Planes& p, const Eigen::Vector3d& trial, 
     ReturnRegion region;
   };
   // Ordered from the most frequent; the first admissible one is the return ([SPO] Box 8.5 tries the face,
-  // then the edge on the trial's side, then the apex; the Rankine sets follow [CDA] sec. 5).
+  // then the edge on the trial's side, then the apex; the Rankine sets follow [CDA]).
   static constexpr std::array<Candidate, 12> kCandidates{{
       {{kMain, 0, 0}, 1, ReturnRegion::Face},
       {{kMain, kTC, 0}, 2, ReturnRegion::EdgeTriaxialCompression},
@@ -266,7 +266,7 @@ MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const Isot
   MohrCoulombUpdate up;
   up.stress = recompose(sp, pr.stress);
   up.region = pr.region;
-  // Plastic strain increment = C (s_trial - s) (the total strain is fixed; [SPO] eq. (8.46)).
+  // Plastic strain increment = C (s_trial - s) (the total strain is fixed; [SPO] sec. 8.2).
   const Eigen::Vector4d ds = trial - up.stress;
   const double p = (ds[0] + ds[1] + ds[2]) / 3.0;
   const double g2 = 2.0 * el.shear_modulus, k3 = 3.0 * el.bulk_modulus;
@@ -294,7 +294,7 @@ Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& tr
   const Planes planes = make_planes(el, st);
   const PrincipalResult pr = principal_return(planes, sp.sorted, g);
 
-  // Principal algorithmic tangent ds/ds_trial = I - D N A^-1 M^T over the active planes ([SPO] eq. (8.51));
+  // Principal algorithmic tangent ds/ds_trial = I - D N A^-1 M^T over the active planes ([SPO] sec. 8.2);
   // zero at a vertex (the stress is a fixed point).
   Eigen::Matrix3d jp = Eigen::Matrix3d::Zero();
   if (pr.count > 0 && pr.count < 3) {
@@ -320,7 +320,7 @@ Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& tr
   const Eigen::Matrix<double, 3, 4> dabz = jabz * l;
   const Eigen::Matrix<double, 1, 4> dcenter = 0.5 * (dabz.row(0) + dabz.row(1));
   const Eigen::Matrix<double, 1, 4> dradius = 0.5 * (dabz.row(0) - dabz.row(1));
-  // Spin term ([SPO] eq. (A.46)): q = r'/R, the returned over the trial circle radius; its limit
+  // Spin term ([SPO] Appendix A, 2D case): q = r'/R, the returned over the trial circle radius; its limit
   // dr'/dR when the in-plane principal values of the trial coincide.
   double q;
   Eigen::Vector3d abz_new;

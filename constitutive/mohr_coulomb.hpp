@@ -5,14 +5,15 @@
 //
 // References
 //   [SPO]  de Souza Neto, Peric & Owen (2008), Computational Methods for Plasticity, Wiley:
-//          sec. 8.2.2 (Mohr-Coulomb return in principal stresses), Boxes 8.4-8.6, eqs. (8.40)-(8.52);
-//          Appendix A.5, eq. (A.46) (derivative of an isotropic tensor function in 2D: the "spin" term).
+//          sec. 8.2 (Mohr-Coulomb: return mapping in principal stresses to the main plane, the edges and
+//          the apex, and its consistent tangent), Boxes 8.4-8.6; Appendix A (derivatives of isotropic
+//          tensor functions, two-dimensional case: the "spin" term of the tangent).
 //   [CDA]  Clausen, Damkilde & Andersen (2006), Efficient return algorithms for associated plasticity with
 //          multiple yield planes, IJNME 66:1036-1059 (return to planes / lines / points in principal space,
-//          the multi-plane linear systems eq. (18)-(27), the Rankine cutoff corners).
+//          the multi-plane linear systems, the Rankine tension cutoff and its corners).
 //
 // Conventions: Pa, tension positive; principal stresses sorted s1 >= s2 >= s3 (s3 the most compressive).
-//   Yield (main plane), [SPO] eq. (8.40):  f = (s1 - s3) + (s1 + s3) sin(phi) - 2 c cos(phi) <= 0
+//   Yield (main plane), [SPO] sec. 8.2:    f = (s1 - s3) + (s1 + s3) sin(phi) - 2 c cos(phi) <= 0
 //   Flow potential:                        g = (s1 - s3) + (s1 + s3) sin(psi)
 //   Tension cutoff (Rankine, associated):  s_i - T <= 0 with T = min(tension_cutoff, c cot(phi)).
 // Plane strain: the total out-of-plane strain increment is zero; szz is tracked through the elastic law.
@@ -82,7 +83,7 @@ MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, con
                                       const MohrCoulombStrength& strength);
 
 /// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress
-/// ([SPO] eq. (8.51)-(8.52) in principal space, mapped back with the spin term of eq. (A.46)).
+/// ([SPO] sec. 8.2 in principal space, mapped back with the spin term of [SPO] Appendix A).
 Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& trial_stress,
                                                      const IsotropicElasticity& elasticity,
                                                      const MohrCoulombStrength& strength);

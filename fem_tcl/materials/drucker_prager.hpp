@@ -4,7 +4,7 @@
 // DruckerPragerPlaneStrain.cpp; Petek, Mackenzie-Helnwein & Arduino), reproduced so that a script gives
 // OpenSees' numbers to round-off.
 //
-// Model (OpenSees DruckerPrager documentation; Petek 2006, MSc thesis, U. Washington, ch. 3), tension positive,
+// Model (OpenSees DruckerPrager documentation; Petek 2006, MSc thesis, U. Washington), tension positive,
 // stress in 6-component contravariant Voigt form (sxx syy szz sxy syz sxz), strain with engineering shears:
 //   f1 = ||s - beta|| + rho I1 - sqrt(2/3) Kiso(alpha1) <= 0     (cone; ||.|| with weight 2 on the shears)
 //   f2 = I1 - T(alpha2) <= 0                                      (tension cutoff)

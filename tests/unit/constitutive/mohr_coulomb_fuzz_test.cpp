@@ -87,7 +87,7 @@ TEST(MohrCoulombFuzz, ReturnsAreFiniteAdmissibleAndIdempotent) {
 
 TEST(MohrCoulombFuzz, AssociatedReturnIsTheClosestPointInTheEnergyNorm) {
   // For associated flow the return is the projection onto the convex admissible set in the complementary
-  // energy norm ([SPO] sec. 7.2.4 / Simo & Hughes 1998, sec. 3.4): (trial - s, C (tau - s)) <= 0 for every
+  // energy norm (de Souza Neto, Peric & Owen 2008, ch. 7; Simo & Hughes 1998, ch. 3): (trial - s, C (tau - s)) <= 0 for every
   // admissible tau. Checked against random admissible states and against other returned states.
   Sampler s;
   for (int n = 0; n < 3000; ++n) {

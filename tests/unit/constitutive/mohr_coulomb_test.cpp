@@ -93,7 +93,7 @@ TEST(MohrCoulombReturn, FaceReturnLiesOnThePlaneAndFollowsTheFlowRule) {
   ASSERT_EQ(u.region, ReturnRegion::Face);
   EXPECT_CLOSE(f_main(principal(u.stress), st), 0.0, 1e-6, 0.0);
   expect_admissible(u.stress, st, 1e-6);
-  // Flow rule [SPO] eq. (8.43): plastic strain ~ (1 + sin psi, 0, -(1 - sin psi)) on (s1, s2, s3).
+  // Flow rule (de Souza Neto et al. 2008, sec. 8.2): plastic strain ~ (1 + sin psi, 0, -(1 - sin psi)) on (s1, s2, s3).
   const Eigen::Vector3d ep = plastic_principal(u);
   const double sd = std::sin(st.dilation);
   EXPECT_GT(ep[0], 0.0);

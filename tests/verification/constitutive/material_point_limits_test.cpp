@@ -2,12 +2,12 @@
 // analytical limit states, and the quadratic convergence of Newton's method with the consistent tangent.
 //
 // References
-//   [CH]  Chen & Han (1988), Plasticity for Structural Engineers, Springer: sec. 3.4 (Mohr-Coulomb, Kp =
-//         (1 + sin phi) / (1 - sin phi), compression limit s_1 = Kp s_3 + 2 c sqrt(Kp)); sec. 3.5 (Drucker-Prager
-//         and its plane-strain match to Mohr-Coulomb).
-//   [SPO] de Souza Neto, Peric & Owen (2008), Computational Methods for Plasticity: sec. 6.4.6 / 8.3 (the
+//   [CH]  Chen & Han (1988), Plasticity for Structural Engineers, Springer: ch. 2 (Mohr-Coulomb, Kp =
+//         (1 + sin phi) / (1 - sin phi), compression limit s_1 = Kp s_3 + 2 c sqrt(Kp); Drucker-Prager and its
+//         plane-strain match to Mohr-Coulomb).
+//   [SPO] de Souza Neto, Peric & Owen (2008), Computational Methods for Plasticity: ch. 6 (the
 //         plane-strain Drucker-Prager match: at collapse in plane strain with associated flow the DP cone gives
-//         the Mohr-Coulomb in-plane limit), sec. 4.3.4 (quadratic convergence with the consistent tangent).
+//         the Mohr-Coulomb in-plane limit), ch. 4 and 7 (quadratic convergence with the consistent tangent).
 //   [D]   Davis (1968), Theories of plasticity and the failure of soil masses, in Soil Mechanics: Selected
 //         Topics (Lee ed.): in plane-strain simple shear with non-dilatant flow the ultimate state has
 //         sxx = syy and tau_xy = c cos(phi) - syy sin(phi).
@@ -58,7 +58,7 @@ double mc_biaxial(const IsotropicElasticity& el, const MohrCoulombStrength& st, 
 }
 
 TEST(MaterialPointLimits, MohrCoulombPlaneStrainCompressionReachesTheAnalyticalLimit) {
-  // [CH] sec. 3.4: at failure s_major(compression) = Kp pc + 2 c sqrt(Kp) with the lateral stress pc.
+  // [CH] ch. 2: at failure s_major(compression) = Kp pc + 2 c sqrt(Kp) with the lateral stress pc.
   const IsotropicElasticity el = IsotropicElasticity::from_young_poisson(50e6, 0.3);
   for (double psi_deg : {0.0, 10.0, 30.0}) {
     for (double c : {0.0, 20e3}) {
@@ -74,7 +74,7 @@ TEST(MaterialPointLimits, MohrCoulombPlaneStrainCompressionReachesTheAnalyticalL
 }
 
 TEST(MaterialPointLimits, NewtonWithTheConsistentTangentConvergesQuadratically) {
-  // [SPO] sec. 4.3.4: with the exact tangent the residual of a plastic step falls quadratically. Mixed control
+  // [SPO] ch. 4, 7: with the exact tangent the residual of a plastic step falls quadratically. Mixed control
   // with two unknowns (exx, gxy) and prescribed sxx = -pc, sxy = tau0 while eyy is compressed: the principal
   // axes rotate, so the plastic response is genuinely nonlinear (not piecewise linear) in the unknowns.
   const IsotropicElasticity el = IsotropicElasticity::from_young_poisson(50e6, 0.3);
@@ -133,7 +133,7 @@ TEST(MaterialPointLimits, MohrCoulombSimpleShearReachesDavisLimit) {
 // --- DruckerPrager (OpenSees) ---------------------------------------------------------------------------------
 
 fem::materials::DruckerPragerParameters dp_matched(double phi, double c, double rho_bar_factor) {
-  // [CH] sec. 3.5 / reference case 1.3: the plane-strain match of Mohr-Coulomb (phi, c).
+  // [CH] ch. 2 / reference case 1.3: the plane-strain match of Mohr-Coulomb (phi, c).
   const double t = std::tan(phi), d = std::sqrt(9 + 12 * t * t);
   fem::materials::DruckerPragerParameters p{};
   p.bulk_modulus = 53333.33;
@@ -163,7 +163,7 @@ TEST(MaterialPointLimits, DruckerPragerSimpleShearLimit) {
 }
 
 TEST(MaterialPointLimits, AssociatedDruckerPragerMatchesMohrCoulombInPlaneStrainCompression) {
-  // [SPO] sec. 6.4.6 / [CH] sec. 3.5: with the plane-strain match and associated flow, the DP collapse stress in
+  // [SPO] ch. 6 / [CH] ch. 2: with the plane-strain match and associated flow, the DP collapse stress in
   // plane-strain biaxial compression equals the Mohr-Coulomb one, Kp pc + 2 c sqrt(Kp).
   const double phi = 30 * kDeg, c = 5.0, pc = 20.0;
   const auto p = dp_matched(phi, c, 1.0);
