@@ -331,7 +331,7 @@ void Engine::run_step(int t) {
 #pragma omp barrier
       integrate_nodes(t);
 #pragma omp barrier
-      g2p<Shape>(t);
+      g2p<Shape>(t, false);
       break;
     case io::Scheme::USL:  // update stress last: strain rate from the updated grid velocity
       p2g<Shape>(t, true, true, true);
@@ -341,8 +341,8 @@ void Engine::run_step(int t) {
       compute_nodal_velocity(t);
       integrate_nodes(t);
 #pragma omp barrier
-      g2p<Shape>(t);
-      update_stress<Shape>(t, updated_.data(), 4, false);
+      g2p<Shape>(t, /*strain_increments=*/true);  // USL: the strain rate uses the same updated velocity
+      update_stress<Shape>(t, updated_.data(), 4, /*strain_ready=*/true);
       break;
     case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
       p2g<Shape>(t, true, true, true);
@@ -352,7 +352,7 @@ void Engine::run_step(int t) {
       compute_nodal_velocity(t);
       integrate_nodes(t);
 #pragma omp barrier
-      g2p<Shape>(t);
+      g2p<Shape>(t, false);
       p2g_momentum_of_updated_velocity(t);
 #pragma omp barrier
       reduce_grid(t, false, true, false);
@@ -543,16 +543,20 @@ void Engine::report(int t, std::size_t k, int kind, std::int64_t id, double a, d
 /// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
 /// FLIP v += dt sum N a, PIC v = sum N v_new, blended by pic_; x += dt sum N v_new.
 /// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
-/// the mesh region (an error, or removed when locate_particles is false).
+/// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
+/// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
 template <class Shape>
-void Engine::g2p(int t) {
+void Engine::g2p(int t, bool strain_increments) {
   constexpr int W = Shape::kWidth;
   const double h = std::min(grid_.hx, grid_.hy);
   for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
     const std::uint32_t p = order_[k];
     const double* wx = &weights_[k * 4 * W];
     const double* wy = wx + W;
+    const double* dwx = wx + 2 * W;
+    const double* dwy = wx + 3 * W;
     double vgx = 0, vgy = 0, agx = 0, agy = 0;
+    double lxx = 0, lyy = 0, lxy = 0, lyx = 0;
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
       const double* u = &updated_[4 * node_row];
@@ -562,7 +566,20 @@ void Engine::g2p(int t) {
         vgy += N * u[1];
         agx += N * u[2];
         agy += N * u[3];
+        if (strain_increments) {
+          const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
+          lxx += dx * u[0];
+          lyy += dy * u[1];
+          lxy += dy * u[0];
+          lyx += dx * u[1];
+        }
       }
+    }
+    if (strain_increments) {
+      double* de = &dstrain_[3 * k];
+      de[0] = dt_ * lxx;
+      de[1] = dt_ * lyy;
+      de[2] = dt_ * (lxy + lyx);
     }
     double vx = cur_.vx[p] + dt_ * agx, vy = cur_.vy[p] + dt_ * agy;
     if (pic_ > 0.0) {
@@ -616,8 +633,8 @@ struct MixedMaterials {
 /// Stress update: strain increment from the grid velocity at the particle, the selected checkerboard
 /// remedy, then the material's stress update and the carried state (next buffer).
 template <class Shape>
-void Engine::update_stress(int t, const double* grid_velocity, int stride, bool /*from_next*/) {
-  compute_strain_increments<Shape>(t, grid_velocity, stride);
+void Engine::update_stress(int t, const double* grid_velocity, int stride, bool strain_ready) {
+  if (!strain_ready) compute_strain_increments<Shape>(t, grid_velocity, stride);
   if (smoothing_ == StressSmoothing::CellVolumetric) average_volumetric_strain_per_cell(t);
   if (smoothing_ == StressSmoothing::NodalStrain) smooth_strain_at_nodes<Shape>(t);  // has barriers
   const std::size_t k0 = chunk_[t], k1 = chunk_[t + 1];

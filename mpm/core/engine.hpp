@@ -73,9 +73,9 @@ class Engine {
   void compute_nodal_velocity(int t);
   void integrate_nodes(int t);
   template <class Shape>
-  void g2p(int t);
+  void g2p(int t, bool strain_increments);
   template <class Shape>
-  void update_stress(int t, const double* grid_velocity, int stride, bool from_next);
+  void update_stress(int t, const double* grid_velocity, int stride, bool strain_ready);
   template <class Shape>
   void run_step(int t);
 

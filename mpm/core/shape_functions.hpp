@@ -40,8 +40,9 @@ struct LinearShape {
 /// uGIMP (Bardenhagen & Kober 2004): `kWidth` = 3 nodes per axis (the nearest node and its neighbours).
 struct GimpShape {
   static constexpr int kWidth = 3;
-  /// One node's weight and gradient for the signed distance r (units of h) and half-size l (units of h).
-  static void node(double r, double l, double& w, double& dw) {
+  /// One node's weight and gradient for the signed distance r (units of h), half-size l (units of h)
+  /// and its inverse il = 1 / l (no division in the hot loop).
+  static void node(double r, double l, double il, double& w, double& dw) {
     const double a = std::abs(r);
     const double sgn = r < 0.0 ? -1.0 : 1.0;
     if (a >= 1.0 + l) {
@@ -49,22 +50,24 @@ struct GimpShape {
       dw = 0.0;
     } else if (a > 1.0 - l) {
       const double d = 1.0 + l - a;
-      w = d * d / (4.0 * l);
-      dw = -sgn * d / (2.0 * l);
+      w = 0.25 * d * d * il;
+      dw = -0.5 * sgn * d * il;
     } else if (a > l) {
       w = 1.0 - a;
       dw = -sgn;
     } else {
-      w = 1.0 - (r * r + l * l) / (2.0 * l);
-      dw = -r / l;
+      w = 1.0 - 0.5 * (r * r + l * l) * il;
+      dw = -r * il;
     }
   }
+  static void node(double r, double l, double& w, double& dw) { node(r, l, 1.0 / l, w, dw); }
   /// s = (x - x0) / h in lattice units; l = lp / h in (0, 1/2]. `max_cell` unused (the lattice must
   /// hold one node beyond the particle's nearest nodes: CB-Geo's halo ring).
   static void eval(double s, double l, int /*max_cell*/, int& base, double w[kWidth], double dw[kWidth]) {
     const int n = static_cast<int>(std::floor(s + 0.5));
     base = n - 1;
-    for (int a = 0; a < kWidth; ++a) node(s - static_cast<double>(base + a), l, w[a], dw[a]);
+    const double il = 1.0 / l;
+    for (int a = 0; a < kWidth; ++a) node(s - static_cast<double>(base + a), l, il, w[a], dw[a]);
   }
 };
 
