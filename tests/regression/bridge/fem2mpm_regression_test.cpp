@@ -6,7 +6,9 @@
 // one-line message naming file and line, and no output written.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -195,6 +197,57 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
                        {"folded.out:5", "non-positive Jacobian", ": 9 15"});
   // Unknown option value.
   expect_clean_failure(model + disp + stress + " --recovery rbf", dir, {"--recovery", "rbf"});
+}
+
+// The whole chain on a small slumping column (small_column.tcl): fem_tcl -> fem2mpm -> mpm.
+// Golden numbers: the column's mass rho W H = 1925 kg/m3 x 8 m x 6 m = 92400 kg/m (analytical); FEM and
+// particle momentum agree to round-off (exact by construction); mpm conserves the particles' mass and
+// count, resumes from the transferred file (the first output lies 50 steps of 2e-4 s = 0.01 s later, so
+// particles have moved by less than 0.05 m at the column's speeds below 2 m/s), and the state stays finite.
+TEST(Fem2mpmRegression, WholeChainFemTclToFem2mpmToMpm) {
+  const fs::path fem_tcl = fs::path(GEOFLOW_BIN_DIR) / "fem_tcl", mpm = fs::path(GEOFLOW_BIN_DIR) / "mpm";
+  if (!fs::exists(fem_tcl) || !fs::exists(mpm)) GTEST_SKIP() << "build fem_tcl and mpm first (targets fem_tcl, mpm)";
+  const fs::path dir = scratch_dir("chain");
+  fs::copy_file(fs::path(GEOFLOW_SOURCE_DIR) / "tests/regression/bridge/small_column.tcl", dir / "small_column.tcl");
+  const std::string cd = "cd " + dir.string() + " && ";
+  ASSERT_EQ(std::system((cd + fem_tcl.string() + " small_column.tcl > fem.txt 2>&1").c_str()), 0) << slurp(dir / "fem.txt");
+  const std::string fem_out = slurp(dir / "fem.txt");
+  EXPECT_NE(fem_out.find("gravity: 0"), std::string::npos) << fem_out;
+  EXPECT_NE(fem_out.find("collapse: 0"), std::string::npos) << fem_out;
+
+  const fs::path deck = dir / "deck";
+  const Result r = run("--model " + (dir / "model.json").string() + " --disp " + (dir / "disp.out").string() + " --vel " +
+                           (dir / "vel.out").string() + " --stress " + (dir / "stress.out").string() +
+                           " --units kN --time 0.1 --recovery spr --dt 2e-4 --nsteps 101 --output-steps 50 --out " + deck.string(),
+                       dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(deck / "report.json"));
+  EXPECT_EQ(report["stress_components_read"], 6);
+  EXPECT_CLOSE(report["fem"]["mass"].get<double>(), 92400.0, 0, 1e-12);
+  EXPECT_CLOSE(report["particle_totals"]["mass"].get<double>(), 92400.0, 0, 1e-12);
+  for (int k = 0; k < 2; ++k)
+    EXPECT_CLOSE(report["particle_totals"]["momentum"][k].get<double>(), report["fem"]["momentum"][k].get<double>(), 1e-9, 1e-12);
+  EXPECT_GT(report["fem"]["kinetic_energy"].get<double>(), 0);  // the column is moving at the transfer
+  const auto transferred = mpm::io::read_particle_table(deck / "results/column/particles000.h5");
+  ASSERT_EQ(transferred.size(), 768u);
+  EXPECT_EQ(transferred[0].nstate_vars, 7u);
+
+  ASSERT_EQ(std::system((mpm.string() + " -f " + deck.string() + "/ -i mpm.json > " + (dir / "mpm.txt").string() + " 2>&1").c_str()), 0)
+      << slurp(dir / "mpm.txt");
+  const auto later = mpm::io::read_particle_table(deck / "results/column/particles050.h5");
+  ASSERT_EQ(later.size(), transferred.size());
+  double mass = 0, moved = 0;
+  for (std::size_t i = 0; i < later.size(); ++i) {
+    const auto& a = later[i];
+    const auto& b = transferred[static_cast<std::size_t>(a.id)];
+    ASSERT_TRUE(std::isfinite(a.coord_x) && std::isfinite(a.coord_y) && std::isfinite(a.stress_yy)) << "particle " << a.id;
+    mass += a.mass;
+    moved = std::max(moved, std::hypot(a.coord_x - b.coord_x, a.coord_y - b.coord_y));
+  }
+  EXPECT_CLOSE(mass, 92400.0, 0, 1e-12);
+  EXPECT_GT(moved, 0.0);
+  EXPECT_LT(moved, 0.05);
+  EXPECT_TRUE(fs::exists(deck / "results/column/particles100.h5"));
 }
 
 }  // namespace
