@@ -112,3 +112,49 @@ TEST(FemStateReader, TagListSyntax) {
 }
 
 }  // namespace
+
+namespace {
+
+// Four-Gauss-point quads (reference_runs case 1.4, recorder_formats: two `quad` elements, OpenSees 3.8
+// `stresses` = 4 Gauss points x (sxx syy sxy) per element; displacements at -precision 12). The model
+// description is written here from model.tcl (that case has no print -JSON).
+TEST(FemStateReader, ReadsQuadFourGaussPointStresses) {
+  const std::filesystem::path dir =
+      std::filesystem::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/recorder_formats/ref";
+  const std::string json = R"({"StructuralAnalysisModel": {
+    "properties": {"ndMaterials": [{"name": "7", "type": "ElasticIsotropicMaterial", "E": 2.5e7, "nu": 0.2, "rho": 2.4}]},
+    "geometry": {
+      "nodes": [{"name": 1, "crd": [0, 0]}, {"name": 2, "crd": [1, 0]}, {"name": 3, "crd": [2, 0]},
+                {"name": 4, "crd": [0, 1]}, {"name": 5, "crd": [1, 1]}, {"name": 6, "crd": [2, 1]}],
+      "elements": [
+        {"name": 1, "type": "FourNodeQuad", "nodes": [1, 2, 5, 4], "thickness": 0.2, "surfacePressure": 0, "masspervolume": 0, "bodyForces": [0, 0], "material": "7"},
+        {"name": 2, "type": "FourNodeQuad", "nodes": [2, 3, 6, 5], "thickness": 0.2, "surfacePressure": 0, "masspervolume": 0, "bodyForces": [0, 0], "material": "7"}]}}})";
+  const auto model = bridge::parse_fem_model(json, "quads.json");
+  bridge::ReadOptions o;
+  o.disp = dir / "disp_all_p12.out";
+  o.stress = dir / "stresses_range.out";
+  o.units = bridge::Units::kN;
+  o.time = 0.5;
+  const auto a = bridge::read_fem_state(model, o);
+  ASSERT_EQ(a.state.elements.size(), 2u);
+  EXPECT_EQ(a.state.elements[1].gauss_points, 4);
+  ASSERT_EQ(a.state.gauss_stress.size(), 8u);
+  EXPECT_EQ(a.stress_components, 3);
+  // t = 0.5 appears twice (end of stage 1, line 10; stage 2 after loadConst -time 0, line 60): the last
+  // row is used, with a note naming both lines.
+  bool noted = false;
+  for (const auto& n : a.notes) noted = noted || n.find("lines 10, 60") != std::string::npos;
+  EXPECT_TRUE(noted);
+  const bridge::RecorderFile stress(dir / "stresses_range.out");
+  const auto s = stress.values(stress.find_time(0.5));
+  // Element 2, Gauss point 3 (+,+): values 12 + 6 .. 12 + 8.
+  EXPECT_CLOSE(a.state.gauss_stress[6][0], 1000 * s[18], 0, 1e-15);
+  EXPECT_CLOSE(a.state.gauss_stress[6][1], 1000 * s[19], 0, 1e-15);
+  EXPECT_CLOSE(a.state.gauss_stress[6][3], 1000 * s[20], 0, 1e-15);
+  const bridge::RecorderFile disp(dir / "disp_all_p12.out");
+  const auto u = disp.values(disp.find_time(0.5));
+  EXPECT_CLOSE(a.state.displacement[5].y(), u[11], 0, 0);  // node 6, 12 significant digits
+  EXPECT_CLOSE(a.state.elements[0].density, 2400, 0, 1e-15);
+}
+
+}  // namespace
