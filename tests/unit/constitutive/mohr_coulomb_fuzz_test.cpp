@@ -47,7 +47,7 @@ struct Sampler {
   std::mt19937_64 rng{20261122};
   double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
   MohrCoulombStrength strength(bool associated) {
-    const double phi = uniform(0.0, 45.0) * kDeg;
+    const double phi = uniform(0.0, 1.0) < 0.1 ? 0.0 : uniform(0.0, 45.0) * kDeg;  // some exact Tresca
     const double psi = associated ? phi : uniform(0.0, 1.0) * phi;
     const double pick = uniform(0.0, 1.0);
     const double c = pick < 0.3 ? 0.0 : (pick < 0.4 ? 1e-9 : uniform(0.0, 50e3));
