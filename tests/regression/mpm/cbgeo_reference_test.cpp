@@ -26,6 +26,8 @@ TEST(CbGeoReference, ElasticBlockDrop) {
   const fs::path dir = copy_case("elastic_block_drop", "block");
   const auto run = run_mpm(dir, "mpm.json", "--threads 1");  // 64 particles: one thread is faster
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err, "");  // not a terminal: no progress line, and nothing else to say
+  EXPECT_EQ(run.out, "");
   const auto ref = read_csv(kCases / "elastic_block_drop/ref/summary.csv");
   ASSERT_EQ(ref.at("step").size(), 5u);
   for (std::size_t r = 0; r < ref.at("step").size(); ++r) {

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers of the mpm regression tests: scratch copies of the CB-Geo reference decks, running the
 // mpm binary, unpacking the gzipped reference HDF5 files, and the statistics summarize.py computes.
+#include <gtest/gtest.h>
 #include <zlib.h>
 
 #include <sys/wait.h>
@@ -30,6 +31,22 @@ inline const fs::path kMpm = fs::path(GEOFLOW_BIN_DIR) / "mpm";
 inline fs::path scratch_root() {
   return fs::temp_directory_path() / ("geoflow_mpm_regression_" + std::to_string(::getpid()));
 }
+
+/// Removes this process's scratch folder unless the test failed (then it is kept to look at).
+class ScratchCleanup : public ::testing::EmptyTestEventListener {
+  void OnTestEnd(const ::testing::TestInfo& info) override {
+    if (info.result() && info.result()->Passed()) {
+      std::error_code ec;
+      fs::remove_all(scratch_root(), ec);
+    }
+  }
+};
+
+/// Registers ScratchCleanup once per test program.
+inline const bool kCleanupRegistered = [] {
+  ::testing::UnitTest::GetInstance()->listeners().Append(new ScratchCleanup);
+  return true;
+}();
 
 /// A copy of reference case `name` (without its ref/ folder) in a fresh scratch folder `tag`.
 inline fs::path copy_case(const std::string& name, const std::string& tag) {

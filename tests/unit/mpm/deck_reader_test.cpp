@@ -55,6 +55,13 @@ class SmallDeck {
       "post_processing": {"path": "results/", "output_steps": 10}
     })");
   }
+  SmallDeck(const SmallDeck&) = delete;
+  SmallDeck& operator=(const SmallDeck&) = delete;
+  ~SmallDeck() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    fs::remove(dir.parent_path(), ec);  // the per-process folder, once empty
+  }
   void write(const std::string& file, const std::string& text) const { std::ofstream(dir / file) << text; }
   mpm::io::Deck read() const {
     write("mpm.json", deck.dump(2));
