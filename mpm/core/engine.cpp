@@ -37,9 +37,10 @@ StressSmoothing parse_stress_smoothing(const std::string& name) {
 void ParticleArrays::resize(std::size_t n) {
   id.resize(n);
   material.resize(n);
-  for (auto* v : {&mass, &volume, &nsize_x, &nsize_y, &lx, &ly, &x, &y, &ux, &uy, &vx, &vy, &sxx, &syy, &szz,
-                  &sxy, &exx, &eyy, &gxy, &epsv})
+  for (auto* v : {&mass, &volume, &nsize_x, &nsize_y, &lx, &ly, &x, &y, &ux, &uy, &vx, &vy, &exx, &eyy, &gxy,
+                  &epsv})
     v->resize(n);
+  stress.resize(4 * n);
   svars.resize(n * kStateVariables);
   key.resize(n);
 }
@@ -174,10 +175,10 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     cur_.uy[p] = r.displacement_y;
     cur_.vx[p] = r.velocity_x;
     cur_.vy[p] = r.velocity_y;
-    cur_.sxx[p] = r.stress_xx;
-    cur_.syy[p] = r.stress_yy;
-    cur_.szz[p] = r.stress_zz;
-    cur_.sxy[p] = r.tau_xy;
+    cur_.stress[4 * p] = r.stress_xx;
+    cur_.stress[4 * p + 1] = r.stress_yy;
+    cur_.stress[4 * p + 2] = r.stress_zz;
+    cur_.stress[4 * p + 3] = r.tau_xy;
     cur_.exx[p] = r.strain_xx;
     cur_.eyy[p] = r.strain_yy;
     cur_.gxy[p] = r.gamma_xy;
@@ -393,18 +394,9 @@ void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
     const double* dwy = wk + 3 * W;
     const double m = cur_.mass[p];
     const double mvx = m * cur_.vx[p], mvy = m * cur_.vy[p];
-    double V, sxx, syy, sxy;
-    if (forces_from_next) {
-      V = nxt_.volume[k];
-      sxx = nxt_.sxx[k];
-      syy = nxt_.syy[k];
-      sxy = nxt_.sxy[k];
-    } else {
-      V = cur_.volume[p];
-      sxx = cur_.sxx[p];
-      syy = cur_.syy[p];
-      sxy = cur_.sxy[p];
-    }
+    const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
+    const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
+    const double sxx = sp[0], syy = sp[1], sxy = sp[3];
     const double mgx = m * gx_, mgy = m * gy_;
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
@@ -776,15 +768,12 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, int t, const 
   for (std::size_t k = k0; k < k1; ++k) {
     const std::uint32_t p = order_[k];
     const double* de = &dstrain_[3 * k];
-    double s[4] = {cur_.sxx[p], cur_.syy[p], cur_.szz[p], cur_.sxy[p]};
+    double* s = &nxt_.stress[4 * k];  // updated in place (a whole-block copy: no partial-store stalls)
+    std::copy_n(&cur_.stress[4 * p], 4, s);
     double sv[kStateVariables];
     const double* sv_in = &cur_.svars[p * kStateVariables];
     for (std::size_t i = 0; i < kStateVariables; ++i) sv[i] = sv_in[i];
     dispatch(cur_.material[p], s, de, sv);
-    nxt_.sxx[k] = s[0];
-    nxt_.syy[k] = s[1];
-    nxt_.szz[k] = s[2];
-    nxt_.sxy[k] = s[3];
     double* sv_out = &nxt_.svars[k * kStateVariables];
     for (std::size_t i = 0; i < kStateVariables; ++i) sv_out[i] = sv[i];
     const double dv = de[0] + de[1];
@@ -838,10 +827,10 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
     r.nsize_y = cur_.nsize_y[p];
     r.velocity_x = cur_.vx[p];
     r.velocity_y = cur_.vy[p];
-    r.stress_xx = cur_.sxx[p];
-    r.stress_yy = cur_.syy[p];
-    r.stress_zz = cur_.szz[p];
-    r.tau_xy = cur_.sxy[p];
+    r.stress_xx = cur_.stress[4 * p];
+    r.stress_yy = cur_.stress[4 * p + 1];
+    r.stress_zz = cur_.stress[4 * p + 2];
+    r.tau_xy = cur_.stress[4 * p + 3];
     r.strain_xx = cur_.exx[p];
     r.strain_yy = cur_.eyy[p];
     r.gamma_xy = cur_.gxy[p];

@@ -45,7 +45,7 @@ struct ParticleArrays {
   std::vector<double> mass, volume, nsize_x, nsize_y;
   std::vector<double> lx, ly;  ///< GIMP half-size in cell units (nsize / 4)
   std::vector<double> x, y, ux, uy, vx, vy;
-  std::vector<double> sxx, syy, szz, sxy;
+  std::vector<double> stress;         ///< 4 per particle: sxx, syy, szz, sxy (one block: the material reads it whole)
   std::vector<double> exx, eyy, gxy, epsv;
   std::vector<double> svars;          ///< kStateVariables per particle
   std::vector<std::int64_t> key;      ///< lattice cell index (x fastest), or kRemoved

@@ -54,12 +54,13 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
       svars[2] = c_residual;
     }
   }
-  const constitutive::PlaneStrainStress s(stress[0], stress[1], stress[2], stress[3]);
-  const constitutive::PlaneStrainStrain de(dstrain[0], dstrain[1], dstrain[2]);
+  const constitutive::PlaneStrainStress s = Eigen::Map<const Eigen::Vector4d>(stress);
+  const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
   const constitutive::MohrCoulombUpdate r = constitutive::mohr_coulomb_update(
       s, de, constitutive::IsotropicElasticity{bulk, shear},
       constitutive::MohrCoulombStrength{svars[0], svars[1], svars[2], tension_cutoff});
-  for (int i = 0; i < 4; ++i) stress[i] = r.stress[i];
+  Eigen::Map<Eigen::Vector4d> out(stress);
+  out = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them
   // when the state is written out, not in the hot loop.
   if (r.region != constitutive::ReturnRegion::Elastic) {
