@@ -97,20 +97,29 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
   int imin = g.nodes_x, imax = -1, jmin = g.nodes_y, jmax = -1;
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     const auto& ids = mesh.cells[c];
-    const int k0 = out.node_index[ids[0]];
+    // ED2Q4 corners may start at any corner (counter-clockwise): the isoparametric map of a rectangle
+    // is the same. ED2Q16G must start at (-1,-1), since the ring order depends on it.
+    int start = 0;
+    if (per_cell == 4)
+      for (int m = 1; m < 4; ++m) {
+        const int km = out.node_index[ids[m]], ks = out.node_index[ids[start]];
+        if (km % g.nodes_x + km / g.nodes_x < ks % g.nodes_x + ks / g.nodes_x) start = m;
+      }
+    const int k0 = out.node_index[ids[start]];
     const int i0 = k0 % g.nodes_x, j0 = k0 / g.nodes_x;
     for (int m = 0; m < per_cell; ++m) {
       const auto xi = per_cell == 16 ? gimp_node_natural_coordinates()[m] : corners[m];
       const int i = i0 + (xi[0] + 1) / 2, j = j0 + (xi[1] + 1) / 2;
       const bool inside = i >= 0 && j >= 0 && i < g.nodes_x && j < g.nodes_y;
-      if (!inside || out.node_index[ids[m]] != i + j * g.nodes_x)
-        throw common::InputError(shown, "cell " + std::to_string(c) + ": node " + std::to_string(m) + " (id " +
-                                            std::to_string(ids[m]) + ") is not where a rectangular " +
+      const int listed = (start + m) % per_cell;
+      if (!inside || out.node_index[ids[listed]] != i + j * g.nodes_x)
+        throw common::InputError(shown, "cell " + std::to_string(c) + ": node " + std::to_string(listed) + " (id " +
+                                            std::to_string(ids[listed]) + ") is not where a rectangular " +
                                             (per_cell == 16 ? "ED2Q16G" : "ED2Q4") +
                                             " cell has it (natural coordinates (" + std::to_string(xi[0]) + ", " +
-                                            std::to_string(xi[1]) + ") from corner node " + std::to_string(ids[0]) +
-                                            "; corners counter-clockwise from the lower left" +
-                                            (per_cell == 16 ? ", then the ring from (-3,-3)" : "") + ")");
+                                            std::to_string(xi[1]) + ") from corner node " + std::to_string(ids[start]) +
+                                            "; corners counter-clockwise" +
+                                            (per_cell == 16 ? " from (-1,-1), then the ring from (-3,-3)" : "") + ")");
     }
     if (i0 + 1 >= g.nodes_x || j0 + 1 >= g.nodes_y)
       throw common::InputError(shown, "cell " + std::to_string(c) + " lies outside the node lattice");

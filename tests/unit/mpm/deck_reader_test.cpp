@@ -326,6 +326,14 @@ TEST(DeckReaderErrors, NodesOffALatticeAndCellsNotARectangle) {
   c.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}]})");
   c.write("particles.txt", "1\n0.5 0.5\n");
   EXPECT_MESSAGE_HAS(c.error(), "mesh.txt: cell 0: node 1 (id 3) is not where");
+  SmallDeck rot("rotated");  // counter-clockwise from the upper right: a valid ED2Q4 cell
+  {
+    std::ofstream mesh(rot.dir / "mesh.txt");
+    mesh << "4 1\n0 0\n1 0\n1 1\n0 1\n2 3 0 1\n";
+  }
+  rot.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0]}]})");
+  rot.write("particles.txt", "1\n0.5 0.5\n");
+  EXPECT_EQ(rot.error(), "");
 }
 
 TEST(DeckReaderErrors, UndefinedNodeSetAndMathFunctionsAndVtk) {
