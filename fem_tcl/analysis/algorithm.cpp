@@ -31,10 +31,18 @@ AlgorithmConfig parse_algorithm(common::CommandArgs& args) {
   return c;
 }
 
+void AlgorithmWorkspace::resize(int n, int krylov_dim) {
+  if (dU.size() == n && static_cast<int>(d.size()) == krylov_dim) return;
+  dU.setZero(n); step.setZero(n); r.setZero(n); r_new.setZero(n);
+  d.assign(krylov_dim, Eigen::VectorXd::Zero(n));
+  w.assign(krylov_dim, Eigen::VectorXd::Zero(n));
+  W.setZero(n, krylov_dim);
+}
+
 namespace {
 
-bool newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, int& iterations, bool modified) {
-  Eigen::VectorXd dU(p.equations());
+bool newton(StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws, int& iterations, bool modified) {
+  Eigen::VectorXd& dU = ws.dU;
   p.form_unbalance();
   test.start();
   if (modified) p.form_tangent();
@@ -48,17 +56,18 @@ bool newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test
     if (r > 0) return true;
     if (r == -2) return false;
   }
-  (void)config;
 }
 
 /// Krylov subspace acceleration of modified Newton (Carlson & Miller 1998): with preconditioned
 /// residuals r_k = A0^-1 R_k, increments d_j and w_j = r_j - r_{j+1}, choose c = argmin ||r_k - W c||
 /// and take d_k = r_k + sum_j c_j (d_j - w_j).
-bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, int& iterations) {
-  const int n = p.equations();
+bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws,
+                   int& iterations) {
   const int m = config.krylov_max_dim;
-  std::vector<Eigen::VectorXd> d, w;
-  Eigen::VectorXd r(n), dU(n);
+  Eigen::VectorXd& r = ws.r;
+  Eigen::VectorXd& r_new = ws.r_new;
+  Eigen::VectorXd& dU = ws.dU;
+  int k = 0;  // current subspace dimension
   p.form_unbalance();
   test.start();
   p.form_tangent();
@@ -71,32 +80,30 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     const int result = test.test(dU, p.unbalance());
     if (result > 0) return true;
     if (result == -2) return false;
-    Eigen::VectorXd r_new(n);
     p.solve(p.unbalance(), r_new);
-    if (static_cast<int>(d.size()) >= m) {  // restart the subspace with a fresh tangent
-      d.clear();
-      w.clear();
+    if (k >= m) {  // restart the subspace with a fresh tangent
+      k = 0;
       p.form_tangent();
       p.solve(p.unbalance(), r_new);
       r = r_new;
       dU = r_new;
       continue;
     }
-    d.push_back(dU);
-    w.push_back(r - r_new);
-    const int k = static_cast<int>(d.size());
-    Eigen::MatrixXd W(n, k);
-    for (int j = 0; j < k; ++j) W.col(j) = w[j];
-    const Eigen::VectorXd c = W.colPivHouseholderQr().solve(r_new);
+    ws.d[k] = dU;
+    ws.w[k] = r - r_new;
+    ++k;
+    for (int j = 0; j < k; ++j) ws.W.col(j) = ws.w[j];
+    const Eigen::VectorXd c = ws.W.leftCols(k).colPivHouseholderQr().solve(r_new);
     dU = r_new;
-    for (int j = 0; j < k; ++j) dU += c[j] * (d[j] - w[j]);
+    for (int j = 0; j < k; ++j) dU += c[j] * (ws.d[j] - ws.w[j]);
     r = r_new;
   }
 }
 
-bool newton_line_search(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, int& iterations) {
-  const int n = p.equations();
-  Eigen::VectorXd dU(n), step(n);
+bool newton_line_search(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws,
+                        int& iterations) {
+  Eigen::VectorXd& dU = ws.dU;
+  Eigen::VectorXd& step = ws.step;
   p.form_unbalance();
   test.start();
   for (;;) {
@@ -130,10 +137,12 @@ bool newton_line_search(const AlgorithmConfig& config, StepProblem& p, Convergen
 
 }  // namespace
 
-bool solve_step(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, int& iterations) {
+bool solve_step(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws,
+                int& iterations) {
+  ws.resize(p.equations(), config.krylov_max_dim);
   switch (config.type) {
     case AlgorithmType::Linear: {
-      Eigen::VectorXd dU(p.equations());
+      Eigen::VectorXd& dU = ws.dU;
       p.form_tangent();
       p.form_unbalance();
       p.solve(p.unbalance(), dU);
@@ -141,10 +150,10 @@ bool solve_step(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& 
       ++iterations;
       return true;
     }
-    case AlgorithmType::Newton: return newton(config, p, test, iterations, config.initial_tangent);
-    case AlgorithmType::ModifiedNewton: return newton(config, p, test, iterations, true);
-    case AlgorithmType::KrylovNewton: return krylov_newton(config, p, test, iterations);
-    case AlgorithmType::NewtonLineSearch: return newton_line_search(config, p, test, iterations);
+    case AlgorithmType::Newton: return newton(p, test, ws, iterations, config.initial_tangent);
+    case AlgorithmType::ModifiedNewton: return newton(p, test, ws, iterations, true);
+    case AlgorithmType::KrylovNewton: return krylov_newton(config, p, test, ws, iterations);
+    case AlgorithmType::NewtonLineSearch: return newton_line_search(config, p, test, ws, iterations);
   }
   return false;
 }

@@ -41,8 +41,17 @@ struct AlgorithmConfig {
 /// `algorithm Linear|Newton|ModifiedNewton|KrylovNewton|NewtonLineSearch <options>` (args at the type).
 AlgorithmConfig parse_algorithm(common::CommandArgs& args);
 
+/// Vectors the algorithms reuse from step to step (sized once per model, no allocation per iteration).
+struct AlgorithmWorkspace {
+  Eigen::VectorXd dU, step, r, r_new;
+  std::vector<Eigen::VectorXd> d, w;  ///< Krylov subspace: increments and residual changes
+  Eigen::MatrixXd W;
+  void resize(int n, int krylov_dim);
+};
+
 /// Solves the current step; returns false when the test fails (OpenSees: algorithm returns < 0).
 /// Throws common::NumericalError for a singular system.
-bool solve_step(const AlgorithmConfig& config, StepProblem& problem, ConvergenceTest& test, int& iterations);
+bool solve_step(const AlgorithmConfig& config, StepProblem& problem, ConvergenceTest& test,
+                AlgorithmWorkspace& work, int& iterations);
 
 }  // namespace fem::analysis

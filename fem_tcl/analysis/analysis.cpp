@@ -16,6 +16,9 @@ Analysis::Analysis(domain::Domain& domain, AnalysisConfig config)
     : domain_(domain), config_(std::move(config)), test_(config_.test) {
   SolverKind kind{};
   if (!solver_kind_for(config_.system, kind)) throw common::InputError("system", "unknown system '" + config_.system + "'");
+  if (config_.integrator.type == IntegratorType::CentralDifference && config_.algorithm.type != AlgorithmType::Linear) {
+    throw common::InputError("integrator CentralDifference", "needs 'algorithm Linear' (an explicit scheme takes one solve per step)");
+  }
   solver_ = std::make_unique<LinearSolver>(kind);
   d_lambda_ = config_.integrator.d_lambda;
 }
@@ -253,13 +256,16 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
       break;
     }
     case IntegratorType::CentralDifference:
+      // OpenSees CentralDifference::update: velocity by the backward difference c2 (3 U - 4 Ut + Ut-1),
+      // acceleration (Udot - Utdot) / dt.
       for (int n = 0; n < nn; ++n) {
         for (int d = 0; d < 2; ++d) {
-          const double du = full[2 * n + d];
-          nodes_[n]->disp[d] += du;
-          nodes_[n]->vel[d] += c2_ * du;
-          nodes_[n]->accel[d] += c3_ * du;
-          nodes_[n]->incr_disp[d] += du;
+          const int i = 2 * n + d;
+          domain::Node& nd = *nodes_[n];
+          nd.disp[d] += full[i];
+          nd.incr_disp[d] += full[i];
+          nd.vel[d] = c2_ * (3.0 * nd.disp[d] - 4.0 * Ut_[i] + Utm1_[i]);
+          nd.accel[d] = (nd.vel[d] - Utd_[i]) / dt_;
         }
       }
       break;
@@ -327,21 +333,32 @@ void Analysis::new_step(double dt) {
       c1_ = 0.0;
       c2_ = 0.5 / dt;
       c3_ = 1.0 / (dt * dt);
+      dt_ = dt;
+      if (!have_previous_) {
+        // as OpenSees CentralDifference::domainChanged: U(t - dt) is taken equal to U(t)
+        std::cerr << "WARNING: CentralDifference::domainChanged() - assuming Ut-1 = Ut\n";
+        for (int n = 0; n < nn; ++n) {
+          for (int d = 0; d < 2; ++d) {
+            const int i = 2 * n + d;
+            Ut_[i] = Utm1_[i] = nodes_[n]->committed_disp[d];
+            Utd_[i] = nodes_[n]->committed_vel[d];
+          }
+        }
+        have_previous_ = true;
+      }
+      // Trial state at t chosen so that the increment dU = U(t+dt) - U(t) solves
+      // (M/dt^2 + C/(2dt)) dU = P(t) - F(U(t)) + M (Ut - Ut-1)/dt^2 - C (Ut - Ut-1)/(2dt).
       for (int n = 0; n < nn; ++n) {
         domain::Node& nd = *nodes_[n];
         for (int d = 0; d < 2; ++d) {
           const int i = 2 * n + d;
-          if (!have_previous_) {
-            Utm1_[i] = nd.committed_disp[d] - dt * nd.committed_vel[d] + 0.5 * dt * dt * nd.committed_accel[d];
-          }
-          const double v_half = (nd.committed_disp[d] - Utm1_[i]) / dt;
-          nd.disp[d] = nd.committed_disp[d];
-          nd.vel[d] = 0.5 * v_half;
-          nd.accel[d] = -v_half / dt;
+          nd.disp[d] = Ut_[i];
+          nd.vel[d] = c2_ * (Ut_[i] - Utm1_[i]);
+          nd.accel[d] = c3_ * (Utm1_[i] - Ut_[i]);
           nd.incr_disp[d] = 0.0;
         }
       }
-      // equilibrium at t_n: loads at the start of the step
+      // equilibrium at t: loads at the start of the step
       domain_.set_time(step_start_time_);
       domain_.apply_loads(step_start_time_);
       domain_.update_elements();
@@ -367,9 +384,13 @@ void Analysis::commit_step(double dt) {
   if (!ic.is_static()) domain_.set_time(step_start_time_ + dt);
   if (ic.type == IntegratorType::CentralDifference) {
     for (int n = 0; n < nn; ++n) {
-      for (int d = 0; d < 2; ++d) Utm1_[2 * n + d] = nodes_[n]->committed_disp[d];
+      for (int d = 0; d < 2; ++d) {
+        const int i = 2 * n + d;
+        Utm1_[i] = Ut_[i];
+        Ut_[i] = nodes_[n]->disp[d];
+        Utd_[i] = nodes_[n]->vel[d];
+      }
     }
-    have_previous_ = true;
   }
   domain_.commit();
 }
@@ -381,7 +402,7 @@ int Analysis::analyze(int steps, double dt) {
     try {
       setup();
       new_step(dt);
-      if (!solve_step(config_.algorithm, *this, test_, iterations)) {
+      if (!solve_step(config_.algorithm, *this, test_, workspace_, iterations)) {
         std::cerr << "WARNING " << (config_.transient ? "DirectIntegrationAnalysis" : "StaticAnalysis")
                   << "::analyze() - the Algorithm failed at time " << domain_.time()
                   << "; the domain is reverted to the last committed state (t = " << domain_.committed_time()

@@ -65,6 +65,7 @@ class Analysis final : public StepProblem {
   domain::Domain& domain_;
   AnalysisConfig config_;
   ConvergenceTest test_;
+  AlgorithmWorkspace workspace_;
   std::unique_ptr<LinearSolver> solver_;
   long version_ = -1;
 
@@ -85,6 +86,7 @@ class Analysis final : public StepProblem {
   bool have_previous_ = false;
   double c1_ = 1.0, c2_ = 0.0, c3_ = 0.0;  ///< tangent = c1 K + c2 C + c3 M
   double step_start_time_ = 0.0;
+  double dt_ = 0.0;
   double d_lambda_ = 0.0;
   int last_iterations_ = 1;
   AnalysisStats stats_;

@@ -140,7 +140,9 @@ std::string cmd_analyze(Context& ctx, common::CommandArgs& args) {
     ctx.analysis = std::make_unique<analysis::Analysis>(ctx.domain, config);
     ctx.analysis_dirty = false;
   }
-  return std::to_string(ctx.analysis->analyze(steps, dt));
+  const int result = ctx.analysis->analyze(steps, dt);
+  if (result < 0) ++ctx.failed_analyses;
+  return std::to_string(result);
 }
 
 std::string cmd_load_const(Context& ctx, common::CommandArgs& args) {

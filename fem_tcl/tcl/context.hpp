@@ -38,6 +38,7 @@ struct Context {
   std::unique_ptr<analysis::Analysis> analysis;  ///< rebuilt when the chain changes
   bool analysis_dirty = true;
   domain::LoadPattern* current_pattern = nullptr;  ///< inside `pattern Plain ... {body}`
+  int failed_analyses = 0;  ///< `analyze` calls that returned < 0 (reported again at exit)
 
   /// Evaluates `script` in the interpreter; throws TclScriptError when it fails.
   void eval(const std::string& script);

@@ -157,6 +157,10 @@ int run_main(int argc, char** argv) {
   }
   std::cout.flush();
   interpreter.context().domain.flush_recorders();
+  if (interpreter.context().failed_analyses > 0) {
+    std::cerr << "WARNING fem_tcl: " << interpreter.context().failed_analyses
+              << " analyze call(s) failed (returned < 0); the state after each failure is the last converged one\n";
+  }
   if (!ok) {
     std::cerr << message << "\n";
     return 1;
