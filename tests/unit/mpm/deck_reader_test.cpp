@@ -410,3 +410,28 @@ TEST(DeckReader, GeneratedGimpGridWithNamedBoundarySets) {
   named.deck["mesh"]["boundary_conditions"]["velocity_constraints"][0]["nset_id"] = "left";
   EXPECT_MESSAGE_HAS(named.error(), "named sets exist only on a generated grid");
 }
+
+TEST(DeckReader, ConstraintFilesAndParticleCells) {
+  SmallDeck d("constraint_files");
+  d.write("vc.txt", "# node dir velocity\n0 1 0.0\n4 0 -0.5\n");
+  d.write("fc.txt", "1 1 -1 0.25\n");
+  d.write("cells.txt", "0 5\n3 5\n");
+  d.deck["mesh"]["boundary_conditions"] = json::parse(
+      R"({"velocity_constraints": [{"file": "vc.txt"}], "friction_constraints": [{"file": "fc.txt"}]})");
+  d.deck["mesh"]["particle_cells"] = "cells.txt";
+  const auto deck = d.read();
+  ASSERT_EQ(deck.velocity_constraints.size(), 2u);
+  EXPECT_EQ(deck.velocity_constraints[1].nodes, (std::vector<int>{4}));
+  EXPECT_EQ(deck.velocity_constraints[1].dir, 0);
+  EXPECT_EQ(deck.velocity_constraints[1].velocity, -0.5);
+  ASSERT_EQ(deck.friction_constraints.size(), 1u);
+  EXPECT_EQ(deck.friction_constraints[0].friction, 0.25);
+  SmallDeck bad("particle_cells_wrong");
+  bad.write("cells.txt", "0 0\n");  // particle 0 is in cell 5, not 0
+  bad.deck["mesh"]["particle_cells"] = "cells.txt";
+  EXPECT_MESSAGE_HAS(bad.error(), "cells.txt: particle 0 at (1.25, 1.25) is not inside cell 0");
+  SmallDeck node("constraint_file_node");
+  node.write("vc.txt", "20 1 0.0\n");
+  node.deck["mesh"]["boundary_conditions"] = json::parse(R"({"velocity_constraints": [{"file": "vc.txt"}]})");
+  EXPECT_MESSAGE_HAS(node.error(), "vc.txt: entry 0: node id 20 is not a node of the mesh");
+}
