@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "common/input_error.hpp"
@@ -35,8 +36,17 @@ std::string num(double v) {
 json parse_json_file(const fs::path& file, const std::string& shown) {
   std::ifstream in(file);
   if (!in) throw common::InputError(shown, "input file not found or not readable (looked for " + file.string() + ")");
+  // A key given twice in one object would silently keep the last value: an error instead.
+  std::vector<std::set<std::string>> keys;
+  const json::parser_callback_t no_duplicates = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    else if (event == json::parse_event_t::object_end) keys.pop_back();
+    else if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
+      throw common::InputError(shown, "key \"" + parsed.get<std::string>() + "\" appears twice in one object");
+    return true;
+  };
   try {
-    return json::parse(in, nullptr, true, /*ignore_comments=*/false);
+    return json::parse(in, no_duplicates, true, /*ignore_comments=*/false);
   } catch (const json::parse_error& e) {
     // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> keep the part after the tag.
     std::string what = e.what();

@@ -235,6 +235,19 @@ TEST(DeckReaderErrors, UnknownKeysAreNamedWithTheirPath) {
   EXPECT_MESSAGE_HAS(m.error(), "materials[0].porosity: unsupported key");
 }
 
+TEST(DeckReaderErrors, DuplicateKey) {
+  SmallDeck d("duplicate");
+  std::string text = d.deck.dump(2);
+  text.replace(text.find("\"dt\""), 0, "\"dt\": 0.5, ");
+  d.write("mpm.json", text);
+  try {
+    mpm::io::read_deck(d.dir, "mpm.json");
+    FAIL();
+  } catch (const common::InputError& e) {
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "mpm.json: key \"dt\" appears twice");
+  }
+}
+
 TEST(DeckReaderErrors, UnknownSchemeIsNotSilentlyUsf) {
   SmallDeck d("scheme");
   d.deck["analysis"]["mpm_scheme"] = "usx";
