@@ -400,7 +400,7 @@ void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattic
         for (double eta : pts)
           for (double xi : pts) xs.emplace_back(xc + 0.5 * deck.grid.hx * xi, yc + 0.5 * deck.grid.hy * eta);
       }
-      shown = g.path_of("cset_id");
+      shown = g.where("cset_id");
     } else {
       g.fail("type", "unsupported generator \"" + type + "\" (expected file or gauss)");
     }
