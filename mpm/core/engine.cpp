@@ -61,6 +61,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   cells_y_ = ny_ - 1;
   nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
+  gimp_margin_ = gimp ? 1.0 : 0.0;
   if (gimp) {
     // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
     const double tol = 1e-9;
@@ -591,8 +592,13 @@ void Engine::g2p(int t, bool strain_increments) {
     } else if (speed * dt_ > h) {
       report(t, k, 2, cur_.id[p], speed, h / dt_);
     }
-    if (x < grid_.xmin || x > grid_.xmax || y < grid_.ymin || y > grid_.ymax || !std::isfinite(x) ||
-        !std::isfinite(y)) {
+    // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
+    // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
+    // support reaches the constrained nodes and one moving node: N = l/4 at the boundary, so it can
+    // drift past it by a fraction of lp). Linear particles must stay inside the region.
+    const double mx = gimp_margin_ * cur_.lx[p] * grid_.hx, my = gimp_margin_ * cur_.ly[p] * grid_.hy;
+    if (x < grid_.xmin - mx || x > grid_.xmax + mx || y < grid_.ymin - my || y > grid_.ymax + my ||
+        !std::isfinite(x) || !std::isfinite(y)) {
       nxt_.key[k] = kRemoved;
       if (locate_) report(t, k, 3, cur_.id[p], x, y);
     } else {

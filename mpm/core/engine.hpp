@@ -96,6 +96,7 @@ class Engine {
   int nx_ = 0, ny_ = 0;          ///< nodes per axis
   int cells_x_ = 0, cells_y_ = 0;
   double inv_hx_ = 1, inv_hy_ = 1;
+  double gimp_margin_ = 0;  ///< 1 for uGIMP (a particle may leave the region by its half-size lp), 0 for linear
   std::size_t nodes_ = 0;
   int bi0_ = 0, bi1_ = 0, bj0_ = 0, bj1_ = 0;  ///< active node box [bi0, bi1) x [bj0, bj1)
   std::vector<double> mass_;      ///< nodal mass

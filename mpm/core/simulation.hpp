@@ -3,12 +3,29 @@
 //
 // A step reads as the algorithm (Sulsky, Chen & Schreyer 1994; Bardenhagen & Kober 2004 for uGIMP;
 // USF/USL/MUSL as in CB-Geo's include/solvers/mpm_scheme/*.tcc):
-//   USF : reset_grid  p2g_mass_momentum  velocity_bc  nodal_velocity  update_stress  p2g_forces  integrate_grid  g2p
-//   USL : reset_grid  p2g_mass_momentum  velocity_bc  nodal_velocity  p2g_forces  integrate_grid  g2p  update_stress
-//   MUSL: reset_grid  p2g_mass_momentum  velocity_bc  nodal_velocity  p2g_forces  integrate_grid  g2p
-//         remap_momentum (p2g of updated particle momentum)  update_stress
+// (Engine::run_step; every p2g is followed by the deterministic reduce_grid of the per-thread grids):
+//   USF : p2g(mass, momentum)  compute_nodal_velocity  update_stress  p2g(forces)  integrate_nodes  g2p
+//   USL : p2g(mass, momentum, forces)  compute_nodal_velocity  integrate_nodes  g2p  update_stress
+//   MUSL: p2g(mass, momentum, forces)  compute_nodal_velocity  integrate_nodes  g2p
+//         p2g_momentum_of_updated_velocity  compute_nodal_velocity  update_stress
+// integrate_nodes = Cundall damping, friction, v += a dt, velocity constraints; update_stress = strain
+// increment, checkerboard remedy, material (one templated loop per material type).
 // Particles are stored as structure-of-arrays, sorted by cell then id each step (deterministic; the
 // order depends only on the state that the snapshot records, so a resume continues bit-identically).
+//
+// Semantics worth knowing (CB-Geo's where not stated):
+// - dt: analysis.dt, or with analysis.cfl > 0 the smaller of analysis.dt (if > 0) and cfl h / c_p,
+//   c_p = sqrt((K + 4G/3) / rho) of the stiffest material; fixed for the run.
+// - analysis.pic_blend in [0, 1] blends the FLIP and PIC velocity updates; velocity_update = true is PIC.
+// - analysis.stress_smoothing: "none", "cell_volumetric" (cell-mean volumetric strain increment) or
+//   "nodal_strain" (mass-weighted nodal smoothing of the strain increment); see engine.hpp.
+// - A particle has left the grid when it is outside the mesh region (uGIMP: when its whole domain of
+//   half-size lp = nsize h / 4 is); an error with locate_particles, else it is removed.
+// - A velocity is "runaway" when the particle would move more than one cell in one step (|v| dt > h).
+// - The particle volume follows its own volumetric strain increment (CB-Geo uses the cell-centre rate);
+//   CB-Geo's invariant state variables (epsilon, rho, theta) are computed from the stress at snapshot.
+// - USL with linear (ED2Q4) cells is unstable when particles enter empty cells (vanishing nodal mass;
+//   Sulsky, Zhou & Schreyer 1995): prefer MUSL, or uGIMP cells.
 #include <cstddef>
 #include <memory>
 #include <vector>

@@ -163,6 +163,27 @@ TEST(Simulation, ParticleLeavingTheGridIsAnErrorNamingIt) {
   EXPECT_TRUE(identical(sim.snapshot(), last_good));  // the failed step left no trace
 }
 
+TEST(Simulation, GimpParticleMayOverhangTheRegionByItsHalfSize) {
+  // uGIMP: a particle is on the grid while its domain (half-size lp = nsize h / 4) overlaps the region.
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Gimp16);
+  deck.materials.push_back(elastic(0, 1000, 1e3, 0.3));
+  fill_block(deck, 1, 2, 0, 1, 4, 0);  // lowest particles at y = 0.125, lp = 0.125
+  for (auto& p : deck.particles) p.velocity_y = -1.0;
+  deck.analysis.dt = 0.01;
+  Simulation sim(deck, 1);
+  for (int i = 0; i < 20; ++i) sim.step();  // lowest row at y = -0.075: overhangs, still on the grid
+  double ymin = 1;
+  for (const auto& p : sim.snapshot()) ymin = std::min(ymin, p.coord_y);
+  EXPECT_LT(ymin, 0.0);
+  try {
+    for (int i = 0; i < 10; ++i) sim.step();  // y < -lp: its whole domain has left
+    FAIL() << "no error";
+  } catch (const common::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("left the grid"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Simulation, ParticleLeavingTheGridIsRemovedWithoutLocate) {
   Deck deck;
   deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Linear4);
