@@ -37,7 +37,9 @@ void Analysis::setup() {
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     for (int d = 0; d < 2; ++d) if (nodes_[i]->fixed[d]) state[2 * i + d] = kFixed;
   }
+  const bool penalty = config_.handler == HandlerType::Penalty;
   prescribed_.clear();
+  penalty_pairs_.clear();
   for (const auto& [tag, p] : domain_.patterns()) {
     for (const auto& sp : p->prescribed) {
       const domain::Node* n = domain_.find_node(sp.node);
@@ -47,13 +49,28 @@ void Analysis::setup() {
       prescribed_.push_back({dof, p.get(), sp.value});
     }
   }
+  if (penalty) {
+    // Penalty (OpenSees PenaltySP_FE / PenaltyMP_FE): every dof keeps its equation; fixed and prescribed
+    // dofs get alphaS on the diagonal, equalDOF pairs alphaM [1 -1; -1 1].
+    for (int i = 0; i < ndof; ++i) {
+      if (state[i] == kFixed) {
+        bool from_pattern = false;
+        for (const auto& p : prescribed_) from_pattern = from_pattern || p.dof == i;
+        if (!from_pattern) prescribed_.push_back({i, nullptr, 0.0});
+        state[i] = kFree;
+      }
+    }
+  }
   // equalDOF: the constrained dof takes the retained dof's equation (a transformation with T = I).
   std::vector<int> alias(ndof, -1);
   for (const auto& c : domain_.equal_dofs()) {
     const domain::Node* r = domain_.find_node(c.retained);
     const domain::Node* k = domain_.find_node(c.constrained);
     if (!r || !k) continue;
-    for (int d : c.dofs) alias[2 * index[k] + d] = 2 * index[r] + d;
+    for (int d : c.dofs) {
+      if (penalty) penalty_pairs_.push_back({2 * index[r] + d, 2 * index[k] + d});
+      else alias[2 * index[k] + d] = 2 * index[r] + d;
+    }
   }
   eq_.assign(ndof, -1);
   neq_ = 0;
@@ -86,6 +103,10 @@ void Analysis::setup() {
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(elements_.size() * 64 + neq_);
   for (int i = 0; i < neq_; ++i) triplets.emplace_back(i, i, 0.0);
+  for (const auto& pp : penalty_pairs_) {
+    triplets.emplace_back(eq_[pp.retained], eq_[pp.constrained], 0.0);
+    triplets.emplace_back(eq_[pp.constrained], eq_[pp.retained], 0.0);
+  }
   for (const auto& ids : element_eq_) {
     for (int a : ids) {
       if (a < 0) continue;
@@ -112,6 +133,15 @@ void Analysis::setup() {
   }
   diag_pos_.resize(neq_);
   for (int i = 0; i < neq_; ++i) diag_pos_[i] = position(i, i);
+  penalty_diag_pos_.clear();
+  penalty_pair_pos_.clear();
+  if (penalty) {
+    for (const auto& p : prescribed_) penalty_diag_pos_.push_back(diag_pos_[eq_[p.dof]]);
+    for (const auto& pp : penalty_pairs_) {
+      const int r = eq_[pp.retained], c = eq_[pp.constrained];
+      penalty_pair_pos_.push_back({position(r, r), position(r, c), position(c, r), position(c, c)});
+    }
+  }
   solver_->set_pattern(std::move(A));
   R_.setZero(neq_);
   dx_.setZero(neq_);
@@ -154,6 +184,13 @@ void Analysis::form_tangent() {
         const int q = eq_[2 * n + d];
         if (q >= 0) values[diag_pos_[q]] += cm * nodes_[n]->mass[d];
       }
+    }
+  }
+  if (config_.handler == HandlerType::Penalty && c1_ != 0.0) {
+    const double a = c1_ * config_.penalty_sp, m = c1_ * config_.penalty_mp;
+    for (int pos : penalty_diag_pos_) values[pos] += a;
+    for (const auto& p : penalty_pair_pos_) {
+      values[p[0]] += m; values[p[1]] -= m; values[p[2]] -= m; values[p[3]] += m;
     }
   }
   // A free dof that nothing stiffens makes the system singular: name it.
@@ -210,9 +247,22 @@ void Analysis::form_unbalance() {
       if (ids[i] >= 0) R_[ids[i]] -= f[i];
     }
   }
+  if (config_.handler == HandlerType::Penalty) {
+    const auto disp = [&](int i) { return nodes_[i / 2]->disp[i % 2]; };
+    for (const auto& p : prescribed_) R_[eq_[p.dof]] += config_.penalty_sp * (prescribed_value(p) - disp(p.dof));
+    for (const auto& pp : penalty_pairs_) {
+      const double gap = config_.penalty_mp * (disp(pp.constrained) - disp(pp.retained));
+      R_[eq_[pp.retained]] += gap;
+      R_[eq_[pp.constrained]] -= gap;
+    }
+  }
 }
 
 void Analysis::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) { solver_->solve(rhs, x); }
+
+double Analysis::prescribed_value(const Prescribed& p) const {
+  return p.pattern ? p.pattern->factor(domain_.time()) * p.value : 0.0;
+}
 
 void Analysis::update(const Eigen::VectorXd& dU) {
   const int ndof = static_cast<int>(eq_.size());
@@ -274,7 +324,7 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
 }
 
 void Analysis::impose_prescribed() {
-  if (prescribed_.empty()) return;
+  if (prescribed_.empty() || config_.handler == HandlerType::Penalty) return;
   full_.setZero();
   const double t = domain_.time();
   for (const auto& p : prescribed_) {

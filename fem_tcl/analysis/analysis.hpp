@@ -22,6 +22,8 @@ enum class HandlerType { Plain, Transformation, Penalty };
 
 struct AnalysisConfig {
   HandlerType handler = HandlerType::Plain;
+  double penalty_sp = 0.0;  ///< Penalty alphaS (single-point constraints)
+  double penalty_mp = 0.0;  ///< Penalty alphaM (equalDOF)
   std::string numberer = "RCM";
   std::string system = "ProfileSPD";
   TestConfig test;
@@ -55,7 +57,9 @@ class Analysis final : public StepProblem {
   void update(const Eigen::VectorXd& dU) override;
 
  private:
-  struct Prescribed { int dof; const domain::LoadPattern* pattern; double value; };
+  struct Prescribed { int dof; const domain::LoadPattern* pattern; double value; };  ///< pattern null: fix
+  struct PenaltyPair { int retained; int constrained; };  ///< full-dof indices
+  double prescribed_value(const Prescribed& p) const;
   void setup();
   void new_step(double dt);
   void apply_increment(const Eigen::VectorXd& full);  // full-dof increment through the integrator
@@ -75,7 +79,10 @@ class Analysis final : public StepProblem {
   std::vector<std::array<int, 8>> element_eq_;
   std::vector<std::array<int, 64>> element_pos_;  ///< value positions in A (or -1)
   std::vector<int> diag_pos_;                    ///< per equation
-  std::vector<Prescribed> prescribed_;
+  std::vector<Prescribed> prescribed_;   ///< eliminated (Plain/Transformation) or penalized (Penalty)
+  std::vector<PenaltyPair> penalty_pairs_;
+  std::vector<int> penalty_diag_pos_;     ///< per prescribed_ entry, Penalty only
+  std::vector<std::array<int, 4>> penalty_pair_pos_;  ///< (rr, rc, cr, cc) per pair
   int neq_ = 0;
 
   Eigen::VectorXd R_;

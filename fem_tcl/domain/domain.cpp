@@ -38,6 +38,7 @@ bool Domain::remove_pattern(int tag) {
 void Domain::clear() {
   flush_recorders();
   recorders_.clear();
+  next_recorder_tag_ = 0;
   patterns_.clear();
   elements_.clear();
   nodes_.clear();
@@ -98,11 +99,22 @@ void Domain::commit() {
 }
 
 void Domain::record() {
-  for (auto& r : recorders_) r->record(time_);
+  for (auto& [tag, r] : recorders_) r->record(time_);
 }
 
 void Domain::flush_recorders() {
-  for (auto& r : recorders_) r->flush();
+  for (auto& [tag, r] : recorders_) r->flush();
+}
+
+bool Domain::remove_recorder(int tag) {
+  for (auto it = recorders_.begin(); it != recorders_.end(); ++it) {
+    if (it->first == tag) {
+      it->second->flush();
+      recorders_.erase(it);
+      return true;
+    }
+  }
+  return false;
 }
 
 void Domain::revert_to_last_commit() {

@@ -23,7 +23,12 @@ class Domain {
   void add_element(std::unique_ptr<Element> element, const std::string& where);
   void add_pattern(std::unique_ptr<LoadPattern> pattern, const std::string& where);
   void add_equal_dof(EqualDof c) { equal_dofs_.push_back(std::move(c)); ++version_; }
-  void add_recorder(std::unique_ptr<Recorder> r) { recorders_.push_back(std::move(r)); }
+  /// Adds a recorder and returns its tag (0, 1, 2, ... in creation order, as OpenSees' `recorder` result).
+  int add_recorder(std::unique_ptr<Recorder> r) {
+    recorders_.push_back({next_recorder_tag_, std::move(r)});
+    return next_recorder_tag_++;
+  }
+  bool remove_recorder(int tag);
   bool remove_pattern(int tag);
   void remove_recorders() { flush_recorders(); recorders_.clear(); }
   void clear();
@@ -76,7 +81,8 @@ class Domain {
   std::map<int, std::unique_ptr<Element>> elements_;
   std::map<int, std::unique_ptr<LoadPattern>> patterns_;
   std::vector<EqualDof> equal_dofs_;
-  std::vector<std::unique_ptr<Recorder>> recorders_;
+  std::vector<std::pair<int, std::unique_ptr<Recorder>>> recorders_;
+  int next_recorder_tag_ = 0;
   RayleighFactors rayleigh_;
   double time_ = 0.0;
   double committed_time_ = 0.0;

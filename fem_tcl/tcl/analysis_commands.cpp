@@ -36,6 +36,8 @@ analysis::AnalysisConfig complete_chain(Context& ctx) {
   }
   analysis::AnalysisConfig config;
   config.handler = *c.handler;
+  config.penalty_sp = c.penalty_sp;
+  config.penalty_mp = c.penalty_mp;
   config.numberer = *c.numberer;
   config.system = *c.system;
   config.test = *c.test;
@@ -53,8 +55,9 @@ std::string cmd_constraints(Context& ctx, common::CommandArgs& args) {
   else if (type == "Transformation") ctx.chain.handler = analysis::HandlerType::Transformation;
   else if (type == "Penalty") {
     ctx.chain.handler = analysis::HandlerType::Penalty;
-    args.number("alphaS");
-    args.number("alphaM");
+    ctx.chain.penalty_sp = args.number("alphaS");
+    ctx.chain.penalty_mp = args.number("alphaM");
+    if (!(ctx.chain.penalty_sp > 0.0) || !(ctx.chain.penalty_mp > 0.0)) args.fail("expected alphaS > 0 and alphaM > 0");
   } else args.fail("unknown constraint handler '" + type + "'");
   args.expect_end();
   mark_dirty(ctx);
@@ -213,7 +216,8 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
   if (what == "recorders") {
     ctx.domain.remove_recorders();
   } else if (what == "recorder") {
-    args.fail("removing one recorder by tag is not supported; use 'remove recorders'");
+    const int tag = args.integer("recorder tag");
+    if (!ctx.domain.remove_recorder(tag)) args.fail("recorder " + std::to_string(tag) + " does not exist");
   } else if (what == "loadPattern" || what == "pattern") {
     const int tag = args.integer("pattern tag");
     if (!ctx.domain.remove_pattern(tag)) args.fail("load pattern " + std::to_string(tag) + " does not exist");

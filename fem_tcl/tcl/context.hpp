@@ -20,6 +20,8 @@ struct TclScriptError {};
 
 struct AnalysisChain {
   std::optional<analysis::HandlerType> handler;
+  double penalty_sp = 0.0;
+  double penalty_mp = 0.0;
   std::optional<std::string> numberer;
   std::optional<std::string> system;
   std::optional<analysis::TestConfig> test;

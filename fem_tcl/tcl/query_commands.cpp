@@ -108,8 +108,7 @@ std::string cmd_record(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_recorder(Context& ctx, common::CommandArgs& args) {
-  ctx.domain.add_recorder(recorders::parse_recorder(args, ctx.domain));
-  return {};
+  return std::to_string(ctx.domain.add_recorder(recorders::parse_recorder(args, ctx.domain)));
 }
 
 namespace {

@@ -173,3 +173,56 @@ TEST(FemTclExecutable, ArgvStdinPutsAndNodeRecorderWithoutDof) {
 }
 
 }  // namespace
+
+namespace {
+
+/// Two SSPquads side by side: either sharing nodes 2 and 5, or with duplicated interface nodes (7, 8) tied
+/// by equalDOF. Returns the tip displacement (node 6 uy) under a tip load.
+double tied_tip(const std::string& handler, bool tied) {
+  Interpreter interp;
+  std::string script = R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0; node 2 1 0; node 3 2 0; node 4 0 1; node 5 1 1; node 6 2 1
+fix 1 1 1; fix 4 1 1
+nDMaterial ElasticIsotropic 1 1000.0 0.25
+element SSPquad 1 1 2 5 4 1 PlaneStrain 1.0
+)tcl";
+  script += tied ? "node 7 1 0; node 8 1 1\nequalDOF 2 7 1 2\nequalDOF 5 8 1 2\nelement SSPquad 2 7 3 6 8 1 PlaneStrain 1.0\n"
+                 : "element SSPquad 2 2 3 6 5 1 PlaneStrain 1.0\n";
+  script += "timeSeries Linear 1\npattern Plain 1 1 { load 6 0.0 -1.0 }\nconstraints " + handler +
+            "\nnumberer Plain; system UmfPack; test NormDispIncr 1e-14 10; algorithm Newton\n"
+            "integrator LoadControl 1.0; analysis Static\nif {[analyze 1] != 0} { error failed }\n";
+  std::string message;
+  EXPECT_TRUE(interp.eval_script(script, "tied", message)) << message;
+  return interp.context().domain.find_node(6)->disp[1];
+}
+
+TEST(TclCommands, ConstraintHandlersEnforceEqualDofAndSupports) {
+  const double shared = tied_tip("Transformation", false);
+  ASSERT_LT(shared, 0.0);
+  EXPECT_CLOSE(tied_tip("Transformation", true), shared, 0.0, 1e-12);
+  EXPECT_CLOSE(tied_tip("Plain", true), shared, 0.0, 1e-12);  // enforced by transformation, with a warning
+  // penalty numbers 1e12 against stiffnesses ~1e3: the constraint error is ~1e-9 relative
+  EXPECT_CLOSE(tied_tip("Penalty 1.0e12 1.0e12", true), shared, 0.0, 1e-6);
+  EXPECT_CLOSE(tied_tip("Penalty 1.0e12 1.0e12", false), shared, 0.0, 1e-6);
+}
+
+TEST(TclCommands, RecorderTagsAndRemoval) {
+  test_support::ScratchDir dir("fem_tcl_rectags");
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  std::string message;
+  const std::string a = (dir.path() / "a.out").string(), b = (dir.path() / "b.out").string();
+  ASSERT_TRUE(interp.eval_script("set r0 [recorder Node -file " + a + " -node 3 -dof 1 disp]\n"
+                                 "set r1 [recorder Node -file " + b + " -node 3 -dof 2 disp]\n"
+                                 "if {$r0 != 0 || $r1 != 1} { error \"tags $r0 $r1\" }\n"
+                                 "remove recorder 0\nrecord\n",
+                                 "test", message))
+      << message;
+  EXPECT_NE(error_of(interp, "remove recorder 5").find("recorder 5 does not exist"), std::string::npos);
+  interp.context().domain.flush_recorders();
+  EXPECT_EQ(test_support::read_numeric_table(a).size(), 0u);
+  EXPECT_EQ(test_support::read_numeric_table(b).size(), 1u);
+}
+
+}  // namespace
