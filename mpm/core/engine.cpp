@@ -333,7 +333,7 @@ void Engine::run_step(int t) {
 #pragma omp barrier
       integrate_nodes(t);
 #pragma omp barrier
-      g2p<Shape>(t, false);
+      g2p<Shape>(t, false, false);
       break;
     case io::Scheme::USL:  // update stress last: strain rate from the updated grid velocity
       p2g<Shape>(t, true, true, true);
@@ -343,7 +343,7 @@ void Engine::run_step(int t) {
       compute_nodal_velocity(t);
       integrate_nodes(t);
 #pragma omp barrier
-      g2p<Shape>(t, /*strain_increments=*/true);  // USL: the strain rate uses the same updated velocity
+      g2p<Shape>(t, /*strain_increments=*/true, false);  // USL: the strain rate uses the same updated velocity
       update_stress<Shape>(t, updated_.data(), 4, /*strain_ready=*/true);
       break;
     case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
@@ -354,8 +354,7 @@ void Engine::run_step(int t) {
       compute_nodal_velocity(t);
       integrate_nodes(t);
 #pragma omp barrier
-      g2p<Shape>(t, false);
-      p2g_momentum_of_updated_velocity(t);
+      g2p<Shape>(t, false, /*remap_momentum=*/true);  // also maps m v_new back to the nodes
 #pragma omp barrier
       reduce_grid(t, false, true, false);
 #pragma omp barrier
@@ -414,28 +413,6 @@ void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
           gn[3] += mgx * N - V * (dx * sxx + dy * sxy);
           gn[4] += mgy * N - V * (dx * sxy + dy * syy);
         }
-      }
-    }
-  }
-}
-
-/// MUSL's second transfer: momentum sum m N v of the particle velocity just updated (Sulsky, Zhou &
-/// Schreyer 1995, eq. 20); the nodal mass of the step is reused.
-void Engine::p2g_momentum_of_updated_velocity(int t) {
-  const int W = grid_.cell_type == io::CellType::Gimp16 ? GimpShape::kWidth : LinearShape::kWidth;
-  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
-  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
-    const double* wx = &weights_[k * 4 * W];
-    const double* wy = wx + W;
-    const double m = cur_.mass[order_[k]];
-    const double mvx = m * nxt_.vx[k], mvy = m * nxt_.vy[k];
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      double* gn = g + 5 * node_row;
-      for (int a = 0; a < W; ++a, gn += 5) {
-        const double N = wx[a] * wy[b];
-        gn[1] += mvx * N;
-        gn[2] += mvy * N;
       }
     }
   }
@@ -538,9 +515,12 @@ void Engine::report(int t, std::size_t k, int kind, std::int64_t id, double a, d
 /// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
 /// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
 /// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
+/// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
+/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into this thread's grid, in the same pass.
 template <class Shape>
-void Engine::g2p(int t, bool strain_increments) {
+void Engine::g2p(int t, bool strain_increments, bool remap_momentum) {
   constexpr int W = Shape::kWidth;
+  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
   const double h = std::min(grid_.hx, grid_.hy);
   for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
     const std::uint32_t p = order_[k];
@@ -582,6 +562,19 @@ void Engine::g2p(int t, bool strain_increments) {
     const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
     nxt_.vx[k] = vx;
     nxt_.vy[k] = vy;
+    if (remap_momentum) {
+      const double m = cur_.mass[p];
+      const double mvx = m * vx, mvy = m * vy;
+      std::size_t row = static_cast<std::size_t>(base_[k]);
+      for (int b = 0; b < W; ++b, row += static_cast<std::size_t>(nx_)) {
+        double* gn = g + 5 * row;
+        for (int a = 0; a < W; ++a, gn += 5) {
+          const double N = wx[a] * wy[b];
+          gn[1] += mvx * N;
+          gn[2] += mvy * N;
+        }
+      }
+    }
     nxt_.x[k] = x;
     nxt_.y[k] = y;
     nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;

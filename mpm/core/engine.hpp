@@ -68,12 +68,11 @@ class Engine {
   // --- the phases of a step (called by every thread t inside one parallel region) ---
   template <class Shape>
   void p2g(int t, bool shape_functions, bool mass_momentum, bool forces);
-  void p2g_momentum_of_updated_velocity(int t);
   void reduce_grid(int t, bool mass, bool momentum, bool forces);
   void compute_nodal_velocity(int t);
   void integrate_nodes(int t);
   template <class Shape>
-  void g2p(int t, bool strain_increments);
+  void g2p(int t, bool strain_increments, bool remap_momentum);
   template <class Shape>
   void update_stress(int t, const double* grid_velocity, int stride, bool strain_ready);
   template <class Shape>

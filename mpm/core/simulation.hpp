@@ -6,8 +6,8 @@
 // (Engine::run_step; every p2g is followed by the deterministic reduce_grid of the per-thread grids):
 //   USF : p2g(mass, momentum)  compute_nodal_velocity  update_stress  p2g(forces)  integrate_nodes  g2p
 //   USL : p2g(mass, momentum, forces)  compute_nodal_velocity  integrate_nodes  g2p  update_stress
-//   MUSL: p2g(mass, momentum, forces)  compute_nodal_velocity  integrate_nodes  g2p
-//         p2g_momentum_of_updated_velocity  compute_nodal_velocity  update_stress
+//   MUSL: p2g(mass, momentum, forces)  compute_nodal_velocity  integrate_nodes  g2p (+ remap of the
+//         updated momentum to the nodes)  compute_nodal_velocity  update_stress
 // integrate_nodes = Cundall damping, friction, v += a dt, velocity constraints; update_stress = strain
 // increment, checkerboard remedy, material (one templated loop per material type).
 // Particles are stored as structure-of-arrays, sorted by cell then id each step (deterministic; the
