@@ -123,7 +123,6 @@ void finish(FemModel& model, const std::filesystem::path& file) {
 FemModel parse_line_by_line(const std::string& text, const std::filesystem::path& file) {
   FemModel model;
   model.source = file;
-  model.materials_readable = false;
   std::istringstream in(text);
   std::string line;
   enum class Section { None, Nodes, Elements, Materials } section = Section::None;
@@ -142,7 +141,10 @@ FemModel parse_line_by_line(const std::string& text, const std::filesystem::path
     const std::string at = file.string() + ":" + std::to_string(line_no);
     const json j = json::parse(entry, nullptr, false);
     if (j.is_discarded()) {
-      if (section == Section::Materials) continue;  // the invalid entry OpenSees writes; materials come from options
+      if (section == Section::Materials) {  // the invalid entry OpenSees writes; materials come from options
+        model.materials_readable = false;
+        continue;
+      }
       throw common::InputError(at, "cannot parse this entry as JSON");
     }
     if (section == Section::Nodes) add_node(model, j, at);

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 
 #include "common/input_error.hpp"
 
@@ -183,7 +184,9 @@ DeckText build_deck(const TransferState& state, const std::vector<mpm::io::Parti
   }
 
   ordered_json deck;
-  deck["title"] = "fem2mpm: FEM state at t = " + std::to_string(state.time) + " s transferred to material points";
+  std::ostringstream title;
+  title << "fem2mpm: FEM state at t = " << state.time << " s transferred to material points";
+  deck["title"] = title.str();
   ordered_json mesh_block;
   mesh_block["mesh"] = "mesh.txt";
   mesh_block["entity_sets"] = "entity_sets.json";

@@ -155,6 +155,65 @@ TEST(Fem2mpmRegression, FullTensorAndMohrCoulombStateVariables) {
   EXPECT_CLOSE(deck["materials"][0]["cohesion"].get<double>(), 5000.0, 0, 1e-15);
 }
 
+// OpenSees 3.8's own DruckerPrager column run (reference_runs case 1.3: 8 x 6 SSPquads on a trapezoid,
+// 4 m wide at the base, 3 m at the top, 6 m high, rho = 1.8 Mg/m3, b2 = -1.8 x 9.81; recorders with
+// -time -dT 0.02). OpenSees 3.8 writes `print -JSON` with a bare word in the DruckerPrager entry (invalid
+// JSON); the file is rebuilt here in that exact layout from model.tcl. The transfer takes nodes and
+// elements from it and the material from the options. Golden numbers: mass = 1800 kg/m3 x (4 + 3)/2 x 6 m2
+// = 37800 kg/m (the element areas sum to the trapezoid exactly); gravity 17.658 / 1.8 = 9.81 m/s2.
+TEST(Fem2mpmRegression, OpenSeesDruckerPragerRunWithInvalidJson) {
+  const fs::path ref = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/dp_column_stage_switch/ref";
+  const fs::path dir = scratch_dir("dp");
+  {
+    std::ofstream f(dir / "model.json");
+    f.precision(17);
+    f << "{\n\"StructuralAnalysisModel\": {\n\t\"properties\": {\n\t\t\"ndMaterials\": [\n"
+      << "\t\t\t{\"name\": \"2\", \"type\": \"DruckerPrager\", \"K\": 53333.3, \"mState\": elastoplastic}\n"
+      << "\t\t]\n\t},\n\t\"geometry\": {\n\t\t\"nodes\": [\n";
+    for (int j = 0; j <= 6; ++j)
+      for (int i = 0; i <= 8; ++i) {
+        const double y = 6.0 * j / 6.0, w = 4.0 + (3.0 - 4.0) * y / 6.0;
+        f << "\t\t\t{\"name\": " << j * 9 + i + 1 << ", \"ndf\": 2, \"crd\": [" << w * i / 8.0 << ", " << y << "]}"
+          << (j == 6 && i == 8 ? "\n" : ",\n");
+      }
+    f << "\t\t],\n\t\t\"elements\": [\n";
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < 8; ++i) {
+        const int n1 = j * 9 + i + 1;
+        f << "\t\t\t{\"name\": " << j * 8 + i + 1 << ", \"type\": \"SSPquad\", \"nodes\": [" << n1 << ", " << n1 + 1 << ", "
+          << n1 + 10 << ", " << n1 + 9 << "], \"thickness\": 1, \"bodyForces\": [0, -17.658], \"material\": \"2\"}"
+          << (j == 5 && i == 7 ? "\n" : ",\n");
+      }
+    f << "\t\t]\n\t}\n}\n}\n";
+  }
+  const std::string base = "--model " + (dir / "model.json").string() + " --disp " + (ref / "disp.out").string() +
+                           " --stress " + (ref / "stress.out").string() + " --units kN --time 0.181";
+  // Without the material options: one line naming the file and what to give.
+  const Result missing = run(base + " --out " + (dir / "none").string(), dir);
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("not valid JSON"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("--material-type"), std::string::npos) << missing.err;
+  EXPECT_FALSE(fs::exists(dir / "none"));
+
+  const fs::path out = dir / "deck";
+  const Result r = run(base + " --material-type mohr-coulomb --E 80e3 --nu 0.25 --density 1.8 --phi 30 --cohesion 5 --out " +
+                           out.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("szz derived as nu (sxx + syy)"), std::string::npos) << r.out;
+  const auto report = nlohmann::json::parse(slurp(out / "report.json"));
+  EXPECT_CLOSE(report["particle_totals"]["mass"].get<double>(), 37800.0, 0, 1e-12);
+  EXPECT_CLOSE(report["fem"]["mass"].get<double>(), 37800.0, 0, 1e-12);
+  EXPECT_CLOSE(report["gravity"].get<double>(), 9.81, 0, 1e-12);
+  EXPECT_CLOSE(report["time"].get<double>(), 0.181, 0, 1e-12);
+  const auto particles = mpm::io::read_particle_table(out / "results/column/particles00000.h5");
+  ASSERT_EQ(particles.size(), 768u);
+  for (const auto& p : particles) {
+    ASSERT_EQ(p.nstate_vars, 7u);
+    ASSERT_LT(p.stress_yy, 0.0);  // the column is in compression everywhere (reference_runs README 1.3)
+    ASSERT_CLOSE(p.stress_zz, 0.25 * (p.stress_xx + p.stress_yy), 1e-9, 1e-12);  // linear in the nodal values
+  }
+}
+
 /// A bad input: exit 2, one line on stderr containing every `needles`, and no output at all.
 void expect_clean_failure(const std::string& args, const fs::path& dir, const std::vector<std::string>& needles) {
   const fs::path out = dir / "deck";
