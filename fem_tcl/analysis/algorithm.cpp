@@ -15,7 +15,8 @@ AlgorithmConfig parse_algorithm(common::CommandArgs& args) {
   else if (type == "NewtonLineSearch") c.type = AlgorithmType::NewtonLineSearch;
   else args.fail("unknown algorithm '" + type + "'");
   while (!args.empty()) {
-    if (args.flag("-initial") || args.flag("-initialThenCurrent") || args.flag("-factorOnce")) c.initial_tangent = true;
+    if (args.flag("-initial")) c.initial_tangent = true;
+    else if (args.flag("-initialThenCurrent") || args.flag("-factorOnce")) {}  // same converged result
     else if (args.flag("-secant") || args.flag("-current")) {}
     else if (args.flag("-maxDim")) c.krylov_max_dim = args.integer("-maxDim value");
     else if (args.flag("-iterateTangent") || args.flag("-incrementTangent")) args.word("tangent type");

@@ -30,7 +30,7 @@ enum class AlgorithmType { Linear, Newton, ModifiedNewton, KrylovNewton, NewtonL
 
 struct AlgorithmConfig {
   AlgorithmType type = AlgorithmType::Newton;
-  bool initial_tangent = false;  ///< -initial: use the tangent of the first iteration only (Newton)
+  bool initial_tangent = false;  ///< -initial: the initial stiffness, factored once (Newton, ModifiedNewton)
   int krylov_max_dim = 3;
   double line_search_tol = 0.8;
   int line_search_max_iter = 10;

@@ -159,7 +159,8 @@ void Analysis::form_tangent() {
   Matrix8 ke;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     domain::Element& el = *elements_[e];
-    ke.noalias() = c1_ * el.tangent_stiffness();
+    // `algorithm Newton -initial`: the initial stiffness replaces the current tangent (OpenSees INITIAL_TANGENT)
+    ke.noalias() = c1_ * (config_.algorithm.initial_tangent ? el.initial_stiffness() : el.tangent_stiffness());
     if (c2_ != 0.0 || c3_ != 0.0) {
       const domain::RayleighFactors& f = el.rayleigh();
       if (c2_ != 0.0) {
