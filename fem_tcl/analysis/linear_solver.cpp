@@ -46,6 +46,10 @@ void LinearSolver::zero_values() { std::fill(A_.valuePtr(), A_.valuePtr() + A_.n
 
 void LinearSolver::factor() {
   const std::size_t nnz = static_cast<std::size_t>(A_.nonZeros());
+  if (A_.rows() == 0) {  // every dof is constrained: nothing to factor
+    factored_ = true;
+    return;
+  }
   if (factored_ && factored_values_.size() == nnz &&
       std::memcmp(factored_values_.data(), A_.valuePtr(), nnz * sizeof(double)) == 0) {
     return;  // same matrix as the last factorization
@@ -71,6 +75,10 @@ void LinearSolver::factor() {
 }
 
 void LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  if (A_.rows() == 0) {
+    x.resize(0);
+    return;
+  }
   if (kind_ == SolverKind::General) x = impl_->lu.solve(b);
   else x = impl_->llt.solve(b);
   if (!x.allFinite()) throw common::NumericalError("the solution of the linear system is not finite (singular system)");

@@ -103,7 +103,27 @@ void Interpreter::set_arguments(const std::string& argv0, const std::vector<std:
 }
 
 namespace {
+/// "file:line: message": the innermost file in errorInfo ('(file "x.tcl" line N)', e.g. inside `source`),
+/// else `name` and the -errorline of the evaluated script.
 std::string error_message(Tcl_Interp* interp, const std::string& name) {
+  std::string message = Tcl_GetStringResult(interp);
+  const char* info = Tcl_GetVar(interp, "errorInfo", TCL_GLOBAL_ONLY);
+  if (info) {
+    const std::string trace(info);
+    const std::string marker = "(file \"";
+    const auto at = trace.find(marker);
+    if (at != std::string::npos) {
+      const auto name_end = trace.find("\" line ", at + marker.size());
+      if (name_end != std::string::npos) {
+        const auto line_start = name_end + 7;
+        const auto line_end = trace.find(')', line_start);
+        if (line_end != std::string::npos) {
+          return trace.substr(at + marker.size(), name_end - at - marker.size()) + ":" +
+                 trace.substr(line_start, line_end - line_start) + ": " + message;
+        }
+      }
+    }
+  }
   Tcl_Obj* options = Tcl_GetReturnOptions(interp, TCL_ERROR);
   Tcl_IncrRefCount(options);
   Tcl_Obj* key = Tcl_NewStringObj("-errorline", -1);
@@ -113,7 +133,6 @@ std::string error_message(Tcl_Interp* interp, const std::string& name) {
   if (Tcl_DictObjGet(interp, options, key, &line_obj) == TCL_OK && line_obj) Tcl_GetIntFromObj(interp, line_obj, &line);
   Tcl_DecrRefCount(key);
   Tcl_DecrRefCount(options);
-  std::string message = Tcl_GetStringResult(interp);
   return name + ":" + std::to_string(line) + ": " + message;
 }
 }  // namespace
