@@ -326,7 +326,7 @@ void Engine::run_step(int t) {
 #pragma omp barrier
       compute_nodal_velocity(t);
 #pragma omp barrier
-      update_stress<Shape>(t, velocity_.data(), 2, /*from_next=*/false);
+      update_stress<Shape>(t, velocity_.data(), 2, /*strain_ready=*/false);
       p2g<Shape>(t, false, false, /*forces=*/true);  // forces from the updated stress (next buffer)
 #pragma omp barrier
       reduce_grid(t, false, false, true);
