@@ -53,9 +53,8 @@ bool newton(StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws, int& 
     p.update(dU);
     p.form_unbalance();
     ++iterations;
-    const int r = test.test(dU, p.unbalance());
-    if (r > 0) return true;
-    if (r == -2) return false;
+    const TestResult r = test.test(dU, p.unbalance());
+    if (r != TestResult::Continue) return r == TestResult::Converged;
   }
 }
 
@@ -78,9 +77,8 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     p.update(dU);
     p.form_unbalance();
     ++iterations;
-    const int result = test.test(dU, p.unbalance());
-    if (result > 0) return true;
-    if (result == -2) return false;
+    const TestResult result = test.test(dU, p.unbalance());
+    if (result != TestResult::Continue) return result == TestResult::Converged;
     p.solve(p.unbalance(), r_new);
     if (k >= m) {  // restart the subspace with a fresh tangent
       k = 0;
@@ -130,9 +128,8 @@ bool newton_line_search(const AlgorithmConfig& config, StepProblem& p, Convergen
     }
     ++iterations;
     step = eta * dU;
-    const int r = test.test(step, p.unbalance());
-    if (r > 0) return true;
-    if (r == -2) return false;
+    const TestResult r = test.test(step, p.unbalance());
+    if (r != TestResult::Continue) return r == TestResult::Converged;
   }
 }
 

@@ -34,7 +34,7 @@ TestConfig parse_test(common::CommandArgs& args) {
   return c;
 }
 
-int ConvergenceTest::test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R) {
+TestResult ConvergenceTest::test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R) {
   switch (config_.type) {
     case TestType::NormDispIncr: norm_ = dU.norm(); break;
     case TestType::NormUnbalance: norm_ = R.norm(); break;
@@ -49,17 +49,17 @@ int ConvergenceTest::test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R) {
       std::cerr << "CTest" << test_name(config_.type) << "::test() - iteration: " << iteration_
                 << " current Norm: " << norm_ << " (max: " << config_.tol << ")\n";
     }
-    return iteration_;
+    return TestResult::Converged;
   }
   if (!std::isfinite(norm_) || iteration_ >= config_.max_iter) {
     if (config_.print_flag != 5) {
       std::cerr << "WARNING: CTest" << test_name(config_.type) << "::test() - failed to converge after: "
                 << iteration_ << " iterations; current Norm: " << norm_ << " (max: " << config_.tol << ")\n";
     }
-    return -2;
+    return TestResult::Failed;
   }
   ++iteration_;
-  return -1;
+  return TestResult::Continue;
 }
 
 }  // namespace fem::analysis

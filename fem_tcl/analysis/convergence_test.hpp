@@ -3,7 +3,6 @@
 //   NormDispIncr   ||dU||_2            <= tol
 //   NormUnbalance  ||R||_2             <= tol   (R: unbalance after the update)
 //   EnergyIncr     0.5 |dU . R|        <= tol   (R as above; OpenSees reads the SOE's current B)
-// test() returns the iteration count when converged, -1 to continue, -2 when maxIter is reached.
 #include <Eigen/Core>
 #include <string>
 
@@ -12,6 +11,9 @@
 namespace fem::analysis {
 
 enum class TestType { NormDispIncr, NormUnbalance, EnergyIncr };
+
+/// Outcome of one test: converged, iterate again, or maxIter reached without convergence.
+enum class TestResult { Converged, Continue, Failed };
 
 struct TestConfig {
   TestType type = TestType::NormUnbalance;
@@ -28,7 +30,7 @@ class ConvergenceTest {
  public:
   explicit ConvergenceTest(TestConfig config) : config_(config) {}
   void start() { iteration_ = 1; }
-  int test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R);
+  TestResult test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R);
   double last_norm() const { return norm_; }
   int iteration() const { return iteration_; }
   const TestConfig& config() const { return config_; }

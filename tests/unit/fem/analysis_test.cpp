@@ -90,13 +90,13 @@ TEST(ConvergenceTest, DefinitionsAndIterationLimit) {
   R << 1.0, -2.0;
   fem::analysis::ConvergenceTest disp({fem::analysis::TestType::NormDispIncr, 5.0, 3, 0});
   disp.start();
-  EXPECT_EQ(disp.test(dU, R), 1);
+  EXPECT_EQ(disp.test(dU, R), fem::analysis::TestResult::Converged);
   EXPECT_DOUBLE_EQ(disp.last_norm(), 5.0);
   fem::analysis::ConvergenceTest energy({fem::analysis::TestType::EnergyIncr, 1e-3, 2, 5});
   energy.start();
-  EXPECT_EQ(energy.test(dU, R), -1);
+  EXPECT_EQ(energy.test(dU, R), fem::analysis::TestResult::Continue);
   EXPECT_DOUBLE_EQ(energy.last_norm(), 0.5 * 5.0);
-  EXPECT_EQ(energy.test(dU, R), -2);  // maxIter reached
+  EXPECT_EQ(energy.test(dU, R), fem::analysis::TestResult::Failed);  // maxIter reached
   fem::analysis::ConvergenceTest unbalance({fem::analysis::TestType::NormUnbalance, 1e-3, 2, 5});
   unbalance.start();
   unbalance.test(dU, R);
