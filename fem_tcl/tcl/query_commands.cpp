@@ -20,6 +20,12 @@ std::string format_values(const double* values, std::size_t n) {
 
 namespace {
 
+/// Appends `word` to a space-separated Tcl list of plain words.
+void append_word(std::string& list, const std::string& word) {
+  if (!list.empty()) list += ' ';
+  list += word;
+}
+
 enum class NodeQuantity { Disp, Vel, Accel, Coord, Reaction };
 
 std::string node_query(Context& ctx, common::CommandArgs& args, NodeQuantity q) {
@@ -63,14 +69,14 @@ std::string cmd_ele_response(Context& ctx, common::CommandArgs& args) {
 std::string cmd_get_node_tags(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   std::string out;
-  for (const auto& [tag, n] : ctx.domain.nodes()) out += (out.empty() ? "" : " ") + std::to_string(tag);
+  for (const auto& [tag, n] : ctx.domain.nodes()) append_word(out, std::to_string(tag));
   return out;
 }
 
 std::string cmd_get_ele_tags(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   std::string out;
-  for (const auto& [tag, e] : ctx.domain.elements()) out += (out.empty() ? "" : " ") + std::to_string(tag);
+  for (const auto& [tag, e] : ctx.domain.elements()) append_word(out, std::to_string(tag));
   return out;
 }
 
@@ -79,7 +85,7 @@ std::string cmd_ele_nodes(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   const domain::Element& e = ctx.domain.element(tag, args.command());
   std::string out;
-  for (const domain::Node* n : e.nodes()) out += (out.empty() ? "" : " ") + std::to_string(n->tag);
+  for (const domain::Node* n : e.nodes()) append_word(out, std::to_string(n->tag));
   return out;
 }
 
