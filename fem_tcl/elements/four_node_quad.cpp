@@ -148,6 +148,15 @@ std::optional<std::vector<double>> FourNodeQuad::response(const std::vector<std:
     }
     return out;
   }
+  if (what == "stress3D" || what == "fullStress") {  // 4 Gauss points x (sxx syy szz sxy syz sxz)
+    std::vector<double> out;
+    out.reserve(24);
+    for (const auto& m : materials_) {
+      const materials::Vector6 v = m->stress_3d();
+      out.insert(out.end(), v.data(), v.data() + 6);
+    }
+    return out;
+  }
   if ((what == "material" || what == "integrPoint") && args.size() >= 3) {
     const auto k = common::CommandArgs::parse_integer(args[1]);
     if (!k || *k < 1 || *k > 4) return std::nullopt;

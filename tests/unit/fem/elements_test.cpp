@@ -129,6 +129,7 @@ TEST(FourNodeQuad, StiffnessMassAndResponses) {
   EXPECT_EQ(e.response({"stresses"})->size(), 12u);
   EXPECT_EQ(e.response({"strains"})->size(), 12u);
   EXPECT_EQ(e.response({"forces"})->size(), 8u);
+  EXPECT_EQ(e.response({"stress3D"})->size(), 24u);
   EXPECT_EQ(e.response({"material", "3", "stress"})->size(), 3u);
   EXPECT_FALSE(e.response({"material", "5", "stress"}).has_value());
 }
