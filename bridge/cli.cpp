@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <thread>
 
 #include "bridge/fem_model.hpp"
 #include "bridge/fem_state_reader.hpp"
@@ -95,7 +96,7 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
   out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, particles.txt, "
       << "report.json in " << outdir.string() << "\n";
   out << "  time: read " << fmt(t.read, 3) << " s, map " << fmt(t.map, 3) << " s, report + deck " << fmt(t.report_deck, 3)
-      << " s, write text " << fmt(t.write_text, 3) << " s, write HDF5 " << fmt(t.write_h5, 3) << " s\n";
+      << " s, write text " << fmt(t.write_text, 3) << " s; write HDF5 " << fmt(t.write_h5, 3) << " s (concurrently)\n";
   out << "  run: mpm -f " << outdir.string() << "/ -i mpm.json\n";
 }
 
@@ -171,47 +172,78 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   const auto nodal = recover_nodal_stress(state, mo.recovery);
   const auto particles = generate_particles(state, nodal, mo);
   timing.map = lap();
-  const TransferReport report = make_report(state, nodal, particles);
-  const DeckText d = build_deck(state, particles, deck);
-  timing.report_deck = lap();
+  DeckText d = plan_deck(state, particles, deck);  // the last check that can fail on user input
 
-  // 3. Write: text files to temporary names, the HDF5 file (itself atomic), then rename the rest.
+  // 3. Write. The HDF5 file is written (to a temporary name, then renamed) on a second thread while the
+  // report and the text files are prepared; the text files are renamed only when both succeeded, and the
+  // HDF5 file is removed again if anything else failed: a failed run leaves no output.
   const std::filesystem::path outdir = o.out;
   std::filesystem::create_directories(outdir / "results" / deck.uuid);
-  nlohmann::ordered_json rj;
-  rj["time"] = state.time;
-  rj["particles"] = report.particle_count;
-  rj["elements"] = state.elements.size();
-  rj["particles_per_direction"] = o.ppd;
-  rj["recovery"] = o.recovery;
-  rj["volume_split"] = o.volume_split;
-  rj["stress_components_read"] = assembled.stress_components;
-  rj["units"] = o.units;
-  rj["gravity"] = state.gravity;
-  rj["fem"] = totals_json(report.fem);
-  rj["particle_totals"] = totals_json(report.particles);
-  rj["stress_difference"] = {{"rms_relative", report.stress_rms_relative},
-                             {"max_relative", report.stress_max_relative},
-                             {"max_abs_pa", report.stress_max_abs},
-                             {"max_element", report.stress_max_element}};
-  rj["min_jacobian"] = {{"value", report.min_jacobian}, {"element", report.min_jacobian_element}};
-  rj["particle_file"] = d.particle_file;
-  rj["notes"] = assembled.notes;
-  rj["warnings"] = assembled.warnings;
+  const std::filesystem::path h5_path = outdir / d.particle_file;
+  std::exception_ptr h5_error;
+  double h5_seconds = 0;
+  std::thread h5_writer([&] {
+    try {
+      const auto start = Clock::now();
+      mpm::io::write_particle_table(h5_path, particles);
+      h5_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    } catch (...) {
+      h5_error = std::current_exception();
+    }
+  });
   std::vector<std::unique_ptr<common::AtomicTextFile>> files;
-  auto text = [&](const char* name, const std::string& body) {
-    files.push_back(std::make_unique<common::AtomicTextFile>(outdir / name));
-    files.back()->stream() << body;
-  };
-  text("mpm.json", d.mpm_json);
-  text("mesh.txt", d.mesh_txt);
-  text("entity_sets.json", d.entity_sets_json);
-  text("particles.txt", d.particles_txt);
-  text("report.json", rj.dump(2) + "\n");
-  timing.write_text = lap();
-  mpm::io::write_particle_table(outdir / d.particle_file, particles);
-  timing.write_h5 = lap();
-  for (auto& f : files) f->commit();
+  TransferReport report;
+  try {
+    report = make_report(state, nodal, particles);
+    format_deck(state, particles, deck, d);
+    timing.report_deck = lap();
+    nlohmann::ordered_json rj;
+    rj["time"] = state.time;
+    rj["particles"] = report.particle_count;
+    rj["elements"] = state.elements.size();
+    rj["particles_per_direction"] = o.ppd;
+    rj["recovery"] = o.recovery;
+    rj["volume_split"] = o.volume_split;
+    rj["stress_components_read"] = assembled.stress_components;
+    rj["units"] = o.units;
+    rj["gravity"] = state.gravity;
+    rj["fem"] = totals_json(report.fem);
+    rj["particle_totals"] = totals_json(report.particles);
+    rj["stress_difference"] = {{"rms_relative", report.stress_rms_relative},
+                               {"max_relative", report.stress_max_relative},
+                               {"max_abs_pa", report.stress_max_abs},
+                               {"max_element", report.stress_max_element}};
+    rj["min_jacobian"] = {{"value", report.min_jacobian}, {"element", report.min_jacobian_element}};
+    rj["particle_file"] = d.particle_file;
+    rj["notes"] = assembled.notes;
+    rj["warnings"] = assembled.warnings;
+    auto text = [&](const char* name, const std::string& body) {
+      files.push_back(std::make_unique<common::AtomicTextFile>(outdir / name));
+      files.back()->stream() << body;
+    };
+    text("mpm.json", d.mpm_json);
+    text("mesh.txt", d.mesh_txt);
+    text("entity_sets.json", d.entity_sets_json);
+    text("particles.txt", d.particles_txt);
+    text("report.json", rj.dump(2) + "\n");
+    for (auto& f : files) f->stream().flush();
+    timing.write_text = lap();
+  } catch (...) {
+    h5_writer.join();
+    std::error_code ec;
+    std::filesystem::remove(h5_path, ec);
+    throw;
+  }
+  h5_writer.join();
+  timing.write_h5 = h5_seconds;
+  if (h5_error) std::rethrow_exception(h5_error);
+  try {
+    for (auto& f : files) f->commit();
+  } catch (...) {
+    std::error_code ec;
+    std::filesystem::remove(h5_path, ec);
+    throw;
+  }
   if (!o.quiet) print_report(out, assembled, report, d, o, outdir, timing);
   return 0;
 }

@@ -1,7 +1,12 @@
 #include "bridge/fem_model.hpp"
 
+#include <array>
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string_view>
 #include <sstream>
 
 #include "common/input_error.hpp"
@@ -37,6 +42,181 @@ long tag_of(const json& obj, const std::string& where_text) {
   throw common::InputError(where_text, "expected an integer tag in \"name\", got " + it->dump());
 }
 
+void insert_node(FemModel& model, const FemNode& node, const std::string& where_text) {
+  if (!model.node_by_tag.emplace(node.tag, static_cast<int>(model.nodes.size())).second)
+    throw common::InputError(where_text, "duplicate node tag " + std::to_string(node.tag));
+  model.nodes.push_back(node);
+}
+
+void insert_element(FemModel& model, const FemElement& e, const std::string& where_text) {
+  if (!model.element_by_tag.emplace(e.tag, static_cast<int>(model.elements.size())).second)
+    throw common::InputError(where_text, "duplicate element tag " + std::to_string(e.tag));
+  model.elements.push_back(e);
+}
+
+/// One flat JSON object on one line, as OpenSees and fem_tcl write geometry entries:
+/// {"key": value, ...} with values a number, a "string" (no escapes), an array of up to 8 numbers,
+/// null, true or false. Parsed without allocation; anything else makes parse() return false and the
+/// caller falls back to the full JSON parser (which also produces the error messages).
+struct FlatValue {
+  enum class Kind { Number, String, Array, Other } kind = Kind::Other;
+  double number = 0;
+  bool integral = false;          ///< a number token without '.', 'e' or 'E'
+  std::string_view text;          ///< the string, or the number's token
+  std::array<double, 8> items{};
+  int count = 0;
+};
+
+class FlatEntry {
+ public:
+  using Value = FlatValue;
+
+  bool parse(std::string_view s) {
+    count_ = 0;
+    std::size_t i = 0;
+    auto ws = [&] { while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i; };
+    auto token_end = [&](std::size_t k) {
+      while (k < s.size() && s[k] != ',' && s[k] != '}' && s[k] != ']' && s[k] != ' ' && s[k] != '\t') ++k;
+      return k;
+    };
+    auto number = [&](double& v, std::string_view& tok) {
+      const std::size_t end = token_end(i);
+      tok = s.substr(i, end - i);
+      const char* b = tok.data();
+      if (!tok.empty() && *b == '+') ++b;
+      const auto res = std::from_chars(b, tok.data() + tok.size(), v);
+      if (res.ec != std::errc() || res.ptr != tok.data() + tok.size()) return false;
+      i = end;
+      return true;
+    };
+    ws();
+    if (i >= s.size() || s[i++] != '{') return false;
+    for (;;) {
+      ws();
+      if (i < s.size() && s[i] == '}' && count_ == 0) { ++i; break; }
+      if (i >= s.size() || s[i++] != '"' || count_ == static_cast<int>(fields_.size())) return false;
+      const std::size_t key_end = s.find('"', i);
+      if (key_end == std::string_view::npos) return false;
+      auto& [key, value] = fields_[static_cast<std::size_t>(count_++)];
+      key = s.substr(i, key_end - i);
+      value = Value{};
+      i = key_end + 1;
+      ws();
+      if (i >= s.size() || s[i++] != ':') return false;
+      ws();
+      if (i >= s.size()) return false;
+      const char c = s[i];
+      if (c == '"') {
+        const std::size_t end = s.find('"', i + 1);
+        if (end == std::string_view::npos) return false;
+        value.kind = Value::Kind::String;
+        value.text = s.substr(i + 1, end - i - 1);
+        if (value.text.find('\\') != std::string_view::npos) return false;
+        i = end + 1;
+      } else if (c == '[') {
+        ++i;
+        value.kind = Value::Kind::Array;
+        ws();
+        if (i < s.size() && s[i] == ']') {
+          ++i;
+        } else {
+          for (;;) {
+            ws();
+            std::string_view tok;
+            if (value.count == static_cast<int>(value.items.size()) || !number(value.items[static_cast<std::size_t>(value.count)], tok)) return false;
+            ++value.count;
+            ws();
+            if (i < s.size() && s[i] == ',') { ++i; continue; }
+            if (i < s.size() && s[i] == ']') { ++i; break; }
+            return false;
+          }
+        }
+      } else if (c == '-' || c == '+' || (c >= '0' && c <= '9')) {
+        value.kind = Value::Kind::Number;
+        if (!number(value.number, value.text)) return false;
+        value.integral = value.text.find_first_of(".eE") == std::string_view::npos;
+      } else if (s.substr(i, 4) == "null" || s.substr(i, 4) == "true" || s.substr(i, 5) == "false") {
+        i = token_end(i);
+      } else {
+        return false;
+      }
+      ws();
+      if (i < s.size() && s[i] == ',') { ++i; continue; }
+      if (i < s.size() && s[i] == '}') { ++i; break; }
+      return false;
+    }
+    ws();
+    return i == s.size();
+  }
+
+  const Value* find(std::string_view key) const {
+    for (int k = 0; k < count_; ++k)
+      if (fields_[static_cast<std::size_t>(k)].first == key) return &fields_[static_cast<std::size_t>(k)].second;
+    return nullptr;
+  }
+
+  /// An integer tag: an integral number, or a string of digits.
+  std::optional<long> tag(std::string_view key) const {
+    const Value* v = find(key);
+    if (!v) return std::nullopt;
+    long out = 0;
+    if (v->kind == Value::Kind::Number && v->integral) {
+      const auto res = std::from_chars(v->text.data() + (v->text[0] == '+'), v->text.data() + v->text.size(), out);
+      if (res.ec == std::errc()) return out;
+    }
+    if (v->kind == Value::Kind::String) {
+      const auto res = std::from_chars(v->text.data(), v->text.data() + v->text.size(), out);
+      if (res.ec == std::errc() && res.ptr == v->text.data() + v->text.size()) return out;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  std::array<std::pair<std::string_view, Value>, 16> fields_{};
+  int count_ = 0;
+};
+
+/// The fast path for a node line; false when the entry is not in the plain form (use the JSON parser).
+bool add_node_fast(FemModel& model, const FlatEntry& f, const std::string& where_text) {
+  const auto tag = f.tag("name");
+  const auto* crd = f.find("crd");
+  if (!tag || !crd || crd->kind != FlatEntry::Value::Kind::Array || crd->count != 2) return false;
+  FemNode node;
+  node.tag = *tag;
+  node.crd = Eigen::Vector2d(crd->items[0], crd->items[1]);
+  insert_node(model, node, where_text);
+  return true;
+}
+
+/// The fast path for an element line; false when the entry is not in the plain form.
+bool add_element_fast(FemModel& model, const FlatEntry& f, const std::string& where_text) {
+  using Kind = FlatEntry::Value::Kind;
+  const auto tag = f.tag("name");
+  const auto* type = f.find("type");
+  const auto* nodes = f.find("nodes");
+  if (!tag || !type || type->kind != Kind::String || !nodes || nodes->kind != Kind::Array || nodes->count != 4) return false;
+  FemElement e;
+  e.tag = *tag;
+  if (type->text == "SSPquad") e.kind = ElementKind::SSPquad;
+  else if (type->text == "FourNodeQuad" || type->text == "quad") e.kind = ElementKind::Quad;
+  else return false;
+  for (int a = 0; a < 4; ++a) {
+    const double v = nodes->items[static_cast<std::size_t>(a)];
+    if (v != std::floor(v) || std::abs(v) > 9e15) return false;
+    e.node_tags[static_cast<std::size_t>(a)] = static_cast<long>(v);
+  }
+  if (const auto* t = f.find("thickness"); t && t->kind == Kind::Number) e.thickness = t->number;
+  if (const auto* m = f.find("material")) {
+    if (m->kind != Kind::String && !(m->kind == Kind::Number && m->integral)) return false;
+    e.material = std::string(m->text);
+  }
+  if (const auto* r = f.find("masspervolume"); r && r->kind == Kind::Number) e.mass_per_volume = r->number;
+  if (const auto* b = f.find("bodyForces"); b && b->kind == Kind::Array && b->count == 2)
+    e.body_force = Eigen::Vector2d(b->items[0], b->items[1]);
+  insert_element(model, e, where_text);
+  return true;
+}
+
 void add_node(FemModel& model, const json& j, const std::string& where_text) {
   FemNode node;
   node.tag = tag_of(j, where_text);
@@ -46,9 +226,7 @@ void add_node(FemModel& model, const json& j, const std::string& where_text) {
   if (crd->size() != 2) throw common::InputError(where_text, "expected a 2D model (-ndm 2), \"crd\" has " +
                                                                  std::to_string(crd->size()) + " values");
   node.crd = Eigen::Vector2d((*crd)[0].get<double>(), (*crd)[1].get<double>());
-  if (model.node_by_tag.count(node.tag)) throw common::InputError(where_text, "duplicate node tag " + std::to_string(node.tag));
-  model.node_by_tag[node.tag] = static_cast<int>(model.nodes.size());
-  model.nodes.push_back(node);
+  insert_node(model, node, where_text);
 }
 
 void add_element(FemModel& model, const json& j, const std::string& where_text) {
@@ -77,10 +255,7 @@ void add_element(FemModel& model, const json& j, const std::string& where_text) 
   if (const auto b = j.find("bodyForces"); b != j.end() && b->is_array() && b->size() == 2 && (*b)[0].is_number() &&
                                            (*b)[1].is_number())
     e.body_force = Eigen::Vector2d((*b)[0].get<double>(), (*b)[1].get<double>());
-  if (model.element_by_tag.count(e.tag))
-    throw common::InputError(where_text, "duplicate element tag " + std::to_string(e.tag));
-  model.element_by_tag[e.tag] = static_cast<int>(model.elements.size());
-  model.elements.push_back(e);
+  insert_element(model, e, where_text);
 }
 
 void add_material(FemModel& model, const json& j) {
@@ -118,14 +293,17 @@ void finish(FemModel& model, const std::filesystem::path& file) {
   }
 }
 
-/// OpenSees 3.8 writes one node, element or material per line. When the whole text is not valid
-/// JSON (a bare word in a DruckerPrager entry), read the geometry entries line by line.
-FemModel parse_line_by_line(const std::string& text, const std::filesystem::path& file) {
+/// OpenSees 3.8 and fem_tcl write one node, element or material per line: read the entries line by
+/// line (fast, and tolerant of the bare word OpenSees writes in DruckerPrager entries: that material is
+/// then left to the options). nullopt when the text is not in that layout.
+std::optional<FemModel> parse_line_by_line(const std::string& text, const std::filesystem::path& file,
+                                           std::string& failure) {
   FemModel model;
   model.source = file;
   std::istringstream in(text);
   std::string line;
   enum class Section { None, Nodes, Elements, Materials } section = Section::None;
+  FlatEntry flat;
   int line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
@@ -139,18 +317,23 @@ FemModel parse_line_by_line(const std::string& text, const std::filesystem::path
     std::string entry = line.substr(first);
     while (!entry.empty() && (entry.back() == ',' || entry.back() == ' ' || entry.back() == '\r')) entry.pop_back();
     const std::string at = file.string() + ":" + std::to_string(line_no);
+    if (section != Section::Materials && flat.parse(entry) &&
+        (section == Section::Nodes ? add_node_fast(model, flat, at) : add_element_fast(model, flat, at)))
+      continue;
     const json j = json::parse(entry, nullptr, false);
     if (j.is_discarded()) {
       if (section == Section::Materials) {  // the invalid entry OpenSees writes; materials come from options
         model.materials_readable = false;
         continue;
       }
-      throw common::InputError(at, "cannot parse this entry as JSON");
+      failure = at + ": cannot parse this entry as JSON";
+      return std::nullopt;  // not the one-entry-per-line layout after all
     }
     if (section == Section::Nodes) add_node(model, j, at);
     else if (section == Section::Elements) add_element(model, j, at);
     else add_material(model, j);
   }
+  if (model.nodes.empty() || model.elements.empty()) return std::nullopt;  // not that layout
   finish(model, file);
   return model;
 }
@@ -168,8 +351,13 @@ int FemModel::element_index(long tag) const {
 }
 
 FemModel parse_fem_model(const std::string& text, const std::filesystem::path& file) {
+  std::string line_failure;
+  if (auto lines = parse_line_by_line(text, file, line_failure)) return std::move(*lines);
   const json root = json::parse(text, nullptr, false);
-  if (root.is_discarded()) return parse_line_by_line(text, file);
+  if (root.is_discarded()) {
+    if (!line_failure.empty()) throw common::InputError(line_failure);
+    throw common::InputError(file.string(), "not valid JSON, and not in print -JSON's one-entry-per-line layout");
+  }
   const auto sam = root.find("StructuralAnalysisModel");
   if (sam == root.end() || !sam->is_object())
     throw common::InputError(where(file, "StructuralAnalysisModel"), "missing (expected OpenSees `print -JSON` output)");

@@ -96,8 +96,8 @@ GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::Part
   return g;
 }
 
-DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
-                    const DeckOptions& options) {
+DeckText plan_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                   const DeckOptions& options) {
   DeckText d;
   const GridSpec g = choose_grid(state, particles, options);
   d.grid = g;
@@ -122,8 +122,15 @@ DeckText build_deck(const TransferState& state, const std::vector<mpm::io::Parti
   if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
   if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
     throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
+  if (options.base == Base::Friction && !(options.base_friction >= 0))
+    throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
+  return d;
+}
 
+void format_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                 const DeckOptions& options, DeckText& d) {
+  const GridSpec& g = d.grid;
   // mesh.txt: nnodes ncells, node coordinates, cells (CB-Geo Ascii2D).
   const int hal = g.halo();
   std::string& mesh = d.mesh_txt;
@@ -179,7 +186,6 @@ DeckText build_deck(const TransferState& state, const std::vector<mpm::io::Parti
   vel.push_back({{"nset_id", 1}, {"dir", 1}, {"velocity", 0.0}});
   if (options.base == Base::Fixed) vel.push_back({{"nset_id", 1}, {"dir", 0}, {"velocity", 0.0}});
   if (options.base == Base::Friction) {
-    if (!(options.base_friction >= 0)) throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
     fric.push_back({{"nset_id", 1}, {"dir", 1}, {"sign_n", -1}, {"friction", options.base_friction}});
   }
 
@@ -237,6 +243,12 @@ DeckText build_deck(const TransferState& state, const std::vector<mpm::io::Parti
     append_number(pt, p.coord_y);
     pt += '\n';
   }
+}
+
+DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                    const DeckOptions& options) {
+  DeckText d = plan_deck(state, particles, options);
+  format_deck(state, particles, options, d);
   return d;
 }
 

@@ -61,7 +61,16 @@ struct DeckText {
 GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
                      const DeckOptions& options);
 
-/// Builds the text of every deck file.
+/// Checks the options and chooses the grid, dt, nsteps, output interval and particle file name
+/// (everything but the text bodies). Throws common::InputError naming the option.
+DeckText plan_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                   const DeckOptions& options);
+
+/// Fills the text bodies of a deck planned by plan_deck (no checks left to fail).
+void format_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+                 const DeckOptions& options, DeckText& deck);
+
+/// plan_deck then format_deck.
 DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
                     const DeckOptions& options);
 

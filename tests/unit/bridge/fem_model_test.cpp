@@ -2,6 +2,9 @@
 // the invalid JSON OpenSees writes for DruckerPrager.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "bridge/fem_model.hpp"
 #include "common/input_error.hpp"
 #include "support/tolerance.hpp"
@@ -87,6 +90,58 @@ TEST(FemModel, RejectsUnsupportedElementAndUnknownNode) {
     EXPECT_NE(std::string(e.what()).find("node 2"), std::string::npos) << e.what();
   }
   EXPECT_THROW(bridge::read_fem_model("/nonexistent/model.json"), common::InputError);
+}
+
+// The one-entry-per-line fast path and the full JSON parser give the same model: the reference file
+// as OpenSees wrote it against the same JSON re-indented (entries over several lines, full parser).
+TEST(FemModel, LineLayoutAndFullParserAgree) {
+  std::ifstream in(kCase / "model.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto fast = bridge::parse_fem_model(text, "model.json");
+  const auto full = bridge::parse_fem_model(nlohmann::json::parse(text).dump(2), "model.json");
+  ASSERT_EQ(fast.nodes.size(), full.nodes.size());
+  ASSERT_EQ(fast.elements.size(), full.elements.size());
+  for (std::size_t i = 0; i < fast.nodes.size(); ++i) {
+    EXPECT_EQ(fast.nodes[i].tag, full.nodes[i].tag);
+    EXPECT_EQ(fast.nodes[i].crd, full.nodes[i].crd);
+  }
+  for (std::size_t i = 0; i < fast.elements.size(); ++i) {
+    EXPECT_EQ(fast.elements[i].node_tags, full.elements[i].node_tags);
+    EXPECT_EQ(fast.elements[i].material, full.elements[i].material);
+    EXPECT_EQ(fast.elements[i].kind, full.elements[i].kind);
+  }
+  EXPECT_EQ(full.materials.at("3").E, fast.materials.at("3").E);
+}
+
+// fem_tcl's compact layout ({"name":1,"ndf":2,"crd":[0.0,0.0]}) and errors on single lines.
+TEST(FemModel, CompactLayoutAndLineErrors) {
+  const std::string compact = "{\n\"StructuralAnalysisModel\": {\n\t\"geometry\": {\n\t\t\"nodes\": [\n"
+                              "\t\t\t{\"name\":1,\"ndf\":2,\"crd\":[0.0,0.0]},\n\t\t\t{\"name\":2,\"ndf\":2,\"crd\":[2.0,0.0]},\n"
+                              "\t\t\t{\"name\":3,\"ndf\":2,\"crd\":[2.0,1.5]},\n\t\t\t{\"name\":4,\"ndf\":2,\"crd\":[0.0,1.5]}\n"
+                              "\t\t],\n\t\t\"elements\": [\n"
+                              "\t\t\t{\"name\":9,\"type\":\"SSPquad\",\"nodes\":[1,2,3,4],\"thickness\":1.0,\"bodyForces\":[0.0,-18.9],\"material\":\"1\"}\n"
+                              "\t\t]\n\t}\n}\n}\n";
+  const auto m = bridge::parse_fem_model(compact, "c.json");
+  ASSERT_EQ(m.nodes.size(), 4u);
+  EXPECT_EQ(m.nodes[2].crd, Eigen::Vector2d(2.0, 1.5));
+  ASSERT_EQ(m.elements.size(), 1u);
+  EXPECT_EQ(m.elements[0].tag, 9);
+  EXPECT_EQ(m.elements[0].material, "1");
+  EXPECT_EQ(m.elements[0].body_force, Eigen::Vector2d(0.0, -18.9));
+  // A 3D node in the same layout: the line and what was expected.
+  std::string bad = compact;
+  bad.replace(bad.find("[2.0,1.5]"), 9, "[2.0,1.5,0]");
+  try {
+    bridge::parse_fem_model(bad, "c.json");
+    FAIL() << "expected an InputError";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("c.json:7"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("-ndm 2"), std::string::npos) << e.what();
+  }
+  // Duplicate tags are named.
+  std::string dup = compact;
+  dup.replace(dup.find("\"name\":2"), 8, "\"name\":1");
+  EXPECT_THROW(bridge::parse_fem_model(dup, "c.json"), common::InputError);
 }
 
 }  // namespace
