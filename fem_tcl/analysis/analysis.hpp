@@ -46,6 +46,7 @@ class Analysis final : public StepProblem {
   /// -3 (the algorithm failed or the system is singular; warning on stderr, state reverted).
   int analyze(int steps, double dt);
   const AnalysisStats& stats() const { return stats_; }
+  const ConvergenceTest& test() const { return test_; }
   const AnalysisConfig& config() const { return config_; }
   int equations() const override { return neq_; }
 

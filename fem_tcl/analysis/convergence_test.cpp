@@ -40,6 +40,7 @@ TestResult ConvergenceTest::test(const Eigen::VectorXd& dU, const Eigen::VectorX
     case TestType::NormUnbalance: norm_ = R.norm(); break;
     case TestType::EnergyIncr: norm_ = 0.5 * std::abs(dU.dot(R)); break;
   }
+  if (norms_.size() < static_cast<std::size_t>(config_.max_iter)) norms_.push_back(norm_);
   if (config_.print_flag == 1 || config_.print_flag == 4) {
     std::cerr << "CTest" << test_name(config_.type) << "::test() - iteration: " << iteration_
               << " current Norm: " << norm_ << " (max: " << config_.tol << ")\n";

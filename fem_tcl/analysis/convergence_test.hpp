@@ -5,6 +5,7 @@
 //   EnergyIncr     0.5 |dU . R|        <= tol   (R as above; OpenSees reads the SOE's current B)
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "common/command_args.hpp"
 
@@ -29,9 +30,14 @@ std::string test_name(TestType type);
 class ConvergenceTest {
  public:
   explicit ConvergenceTest(TestConfig config) : config_(config) {}
-  void start() { iteration_ = 1; }
+  void start() {
+    iteration_ = 1;
+    norms_.clear();
+  }
   TestResult test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R);
   double last_norm() const { return norm_; }
+  /// The norms of the last step's iterations (OpenSees `testNorm`).
+  const std::vector<double>& norms() const { return norms_; }
   int iteration() const { return iteration_; }
   const TestConfig& config() const { return config_; }
 
@@ -39,6 +45,7 @@ class ConvergenceTest {
   TestConfig config_;
   int iteration_ = 1;
   double norm_ = 0.0;
+  std::vector<double> norms_;
 };
 
 }  // namespace fem::analysis

@@ -49,6 +49,8 @@ constexpr std::array kCommands{
     CommandEntry{"reactions", "reactions", 0, cmd_reactions},
     CommandEntry{"nodeReaction", "nodeReaction nodeTag <dof>", 1, cmd_node_reaction},
     CommandEntry{"getLoadFactor", "getLoadFactor patternTag", 1, cmd_get_load_factor},
+    CommandEntry{"testIter", "testIter", 0, cmd_test_iter},
+    CommandEntry{"testNorm", "testNorm", 0, cmd_test_norm},
     CommandEntry{"record", "record", 0, cmd_record},
     CommandEntry{"recorder", "recorder Node|Element -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b -dof d.. | -ele e.. | -eleRange a b) response..", 1, cmd_recorder},
     CommandEntry{"print", "print -JSON <-file f>", 0, cmd_print},

@@ -69,6 +69,8 @@ std::string cmd_ele_nodes(Context&, common::CommandArgs&);
 std::string cmd_reactions(Context&, common::CommandArgs&);
 std::string cmd_node_reaction(Context&, common::CommandArgs&);
 std::string cmd_get_load_factor(Context&, common::CommandArgs&);
+std::string cmd_test_iter(Context&, common::CommandArgs&);
+std::string cmd_test_norm(Context&, common::CommandArgs&);
 std::string cmd_record(Context&, common::CommandArgs&);
 std::string cmd_recorder(Context&, common::CommandArgs&);
 std::string cmd_print(Context&, common::CommandArgs&);

@@ -107,6 +107,24 @@ std::string cmd_get_load_factor(Context& ctx, common::CommandArgs& args) {
   return format_values(&f, 1);
 }
 
+std::string cmd_test_iter(Context& ctx, common::CommandArgs& args) {
+  args.expect_end();
+  if (!ctx.analysis) return "0";
+  return std::to_string(ctx.analysis->test().norms().size());
+}
+
+std::string cmd_test_norm(Context& ctx, common::CommandArgs& args) {
+  args.expect_end();
+  std::string out;
+  if (!ctx.analysis) return out;
+  char buffer[64];
+  for (double n : ctx.analysis->test().norms()) {
+    std::snprintf(buffer, sizeof buffer, "%.17g", n);
+    append_word(out, buffer);
+  }
+  return out;
+}
+
 std::string cmd_record(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   ctx.domain.record();

@@ -125,6 +125,20 @@ set ok [analyze 1]
   EXPECT_TRUE(interp.eval_script("if {[getTime] != 0.0} { error \"time [getTime]\" }", "test", message)) << message;
 }
 
+TEST(TclCommands, TestIterAndTestNormReportTheLastStep) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kTwoElementModel) + R"tcl(
+timeSeries Linear 1
+pattern Plain 1 1 { load 6 0.0 -1.0 }
+constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-9 10; algorithm Newton
+integrator LoadControl 1.0; analysis Static
+analyze 1
+set it [testIter]
+set norms [testNorm]
+if {$it < 1 || [llength $norms] != $it || [lindex $norms end] > 1e-9} { error "testIter $it testNorm $norms" }
+)tcl"), "");
+}
+
 TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitOneAndFlushedRecorders) {
   test_support::ScratchDir dir("fem_tcl_uncaught");
   {
