@@ -3,6 +3,7 @@
 // revert, tangent, initial stiffness, lumped mass, resisting force, element loads and Rayleigh damping.
 // Dof order (u1x u1y u2x u2y u3x u3y u4x u4y), nodes counter-clockwise.
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -84,6 +85,21 @@ class Element {
   /// Tag of the nDMaterial the element was built from.
   virtual int material_tag() const = 0;
   virtual nlohmann::ordered_json to_json() const = 0;
+
+  /// Minimum over the four corners of the bilinear map's Jacobian determinant in the current configuration
+  /// (coordinates + trial displacements): det J at corner a = 1/4 (x_{a+1} - x_a) x (x_{a-1} - x_a).
+  /// Non-positive means the element is inverted or degenerate (mesh distortion monitor).
+  double min_corner_jacobian() const {
+    double m = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const Vector2 xa = nodes_[a]->crd + nodes_[a]->disp;
+      const Vector2 e1 = nodes_[(a + 1) % 4]->crd + nodes_[(a + 1) % 4]->disp - xa;
+      const Vector2 e2 = nodes_[(a + 3) % 4]->crd + nodes_[(a + 3) % 4]->disp - xa;
+      const double det = 0.25 * (e1[0] * e2[1] - e1[1] * e2[0]);
+      m = a == 0 ? det : std::min(m, det);
+    }
+    return m;
+  }
 
   /// Element displacement vector from the nodes' trial displacements.
   Vector8 trial_displacement() const {

@@ -148,6 +148,7 @@ std::optional<std::vector<double>> FourNodeQuad::response(const std::vector<std:
     }
     return out;
   }
+  if (what == "minJacobian") return std::vector<double>{min_corner_jacobian()};
   if (what == "stress3D" || what == "fullStress") {  // 4 Gauss points x (sxx syy szz sxy syz sxz)
     std::vector<double> out;
     out.reserve(24);

@@ -123,6 +123,7 @@ std::optional<std::vector<double>> SSPquad::response(const std::vector<std::stri
     const Vector8& f = resisting_force();
     return std::vector<double>(f.data(), f.data() + 8);
   }
+  if (args[0] == "minJacobian") return std::vector<double>{min_corner_jacobian()};
   // Every other response is forwarded to the material (OpenSees SSPquad::setResponse).
   return material_->response(args[0]);
 }

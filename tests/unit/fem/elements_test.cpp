@@ -112,6 +112,22 @@ TEST(SSPquad, StiffnessMassAndBodyForce) {
   EXPECT_FALSE(e.response({"bogus"}).has_value());
 }
 
+TEST(SSPquad, MinJacobianFollowsTheDeformedShape) {
+  QuadFixture f;
+  fem::elements::SSPquad e(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0);
+  const double undeformed = e.response({"minJacobian"})->at(0);
+  EXPECT_GT(undeformed, 0.0);
+  f.nodes[2]->disp = fem::domain::Vector2(-3.0, -2.0);  // push node 3 past the diagonal 2-4: inverted corner
+  EXPECT_LT(e.response({"minJacobian"})->at(0), 0.0);
+  f.nodes[2]->disp.setZero();
+  // a unit square has det J = 1/4 at every corner
+  Domain d;
+  std::array<fem::domain::Node*, 4> sq{&d.add_node(1, 0, 0, "t"), &d.add_node(2, 1, 0, "t"), &d.add_node(3, 1, 1, "t"),
+                                       &d.add_node(4, 0, 1, "t")};
+  fem::elements::SSPquad unit(2, sq, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0);
+  EXPECT_CLOSE(unit.response({"minJacobian"})->at(0), 0.25, 0.0, 1e-15);
+}
+
 TEST(SSPquad, RejectsClockwiseNodes) {
   QuadFixture f(true);
   EXPECT_THROW(fem::elements::SSPquad(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0),
