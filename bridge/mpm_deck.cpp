@@ -63,7 +63,7 @@ ordered_json material_json(const MpmMaterial& m) {
 
 }  // namespace
 
-GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                      const DeckOptions& options) {
   GridSpec g;
   g.gimp = options.gimp;
@@ -96,7 +96,7 @@ GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::Part
   return g;
 }
 
-DeckText plan_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+DeckText plan_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                    const DeckOptions& options) {
   DeckText d;
   const GridSpec g = choose_grid(state, particles, options);
@@ -128,7 +128,7 @@ DeckText plan_deck(const TransferState& state, const std::vector<mpm::io::Partic
   return d;
 }
 
-void format_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                  const DeckOptions& options, DeckText& d) {
   const GridSpec& g = d.grid;
   // mesh.txt: nnodes ncells, node coordinates, cells (CB-Geo Ascii2D).
@@ -245,7 +245,7 @@ void format_deck(const TransferState& state, const std::vector<mpm::io::Particle
   }
 }
 
-DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+DeckText build_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                     const DeckOptions& options) {
   DeckText d = plan_deck(state, particles, options);
   format_deck(state, particles, options, d);

@@ -6,6 +6,7 @@
 // complete also for a fresh start).
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -58,20 +59,20 @@ struct DeckText {
 
 /// Chooses the grid (throws common::InputError naming the option when a particle lies outside the
 /// requested extent or the sizes are not positive).
-GridSpec choose_grid(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                      const DeckOptions& options);
 
 /// Checks the options and chooses the grid, dt, nsteps, output interval and particle file name
 /// (everything but the text bodies). Throws common::InputError naming the option.
-DeckText plan_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+DeckText plan_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                    const DeckOptions& options);
 
 /// Fills the text bodies of a deck planned by plan_deck (no checks left to fail).
-void format_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                  const DeckOptions& options, DeckText& deck);
 
 /// plan_deck then format_deck.
-DeckText build_deck(const TransferState& state, const std::vector<mpm::io::ParticleRecord>& particles,
+DeckText build_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                     const DeckOptions& options);
 
 }  // namespace bridge

@@ -1,6 +1,7 @@
 #include "bridge/particle_mapping.hpp"
 
 #include <cmath>
+#include <new>
 #include <algorithm>
 
 namespace bridge {
@@ -31,13 +32,13 @@ unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& s, double* svar
   return 7;
 }
 
-std::vector<mpm::io::ParticleRecord> generate_particles(const TransferState& state,
+ParticleList generate_particles(const TransferState& state,
                                                         const std::vector<Stress6>& nodal_stress,
                                                         const MappingOptions& options) {
   const int n = options.particles_per_direction;
   const GaussRule rule = gauss_legendre(n);
   const std::size_t per_element = static_cast<std::size_t>(n * n);
-  std::vector<mpm::io::ParticleRecord> out(state.elements.size() * per_element);
+  ParticleList out(state.elements.size() * per_element);  // not yet initialised: see the loop
   const double nsize = 2.0 / n;
   // Shape functions and weights at the n x n points, computed once.
   struct Point { double xi, eta, w; std::array<double, 4> shape; };
@@ -69,7 +70,8 @@ std::vector<mpm::io::ParticleRecord> generate_particles(const TransferState& sta
     for (std::size_t q = 0; q < per_element; ++q) {
       const Point& pt = points[q];
       const auto& N = pt.shape;
-      mpm::io::ParticleRecord& r = out[e * per_element + q];  // value-initialised by the vector
+      // Value-initialisation zeroes the whole record, padding included (byte-reproducible files).
+      mpm::io::ParticleRecord& r = *::new (static_cast<void*>(&out[e * per_element + q])) mpm::io::ParticleRecord{};
       r.id = static_cast<std::int64_t>(e * per_element + q);
       double volume = 0, ref_volume = 0;
       if (options.volume_split == VolumeSplit::Jacobian) {

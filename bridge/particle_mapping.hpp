@@ -1,6 +1,9 @@
 #pragma once
 // Nodes -> material points (the paper, "Hybrid FEM-MPM", Figure 3b): n x n particles per element at
 // the Gauss-Legendre points, values from the element's bilinear shape functions.
+#include <memory>
+#include <new>
+#include <utility>
 #include <vector>
 
 #include "bridge/stress_recovery.hpp"
@@ -8,6 +11,29 @@
 #include "mpm/io/particle_table.hpp"
 
 namespace bridge {
+
+/// Leaves the memory of new elements untouched on resize (no serial zero fill): the parallel loop that
+/// fills the records value-initialises each one (padding included), so every thread touches its own
+/// pages first.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U*) noexcept {}
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// The particles, in id order (contiguous: pass as std::span to mpm::io::write_particle_table).
+using ParticleList = std::vector<mpm::io::ParticleRecord, UninitializedAllocator<mpm::io::ParticleRecord>>;
 
 enum class VolumeSplit { Jacobian, Area };
 
@@ -33,7 +59,7 @@ unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& stress, double*
 /// (id = element_index * n^2 + j * n + i). Position, displacement, velocity and stress from the nodal
 /// values with N_a; volume from the current geometry, mass = density x reference volume (so the
 /// total mass equals sum density x reference area exactly); nsize = 2/n; cell_id -1; status 1.
-std::vector<mpm::io::ParticleRecord> generate_particles(const TransferState& state,
+ParticleList generate_particles(const TransferState& state,
                                                         const std::vector<Stress6>& nodal_stress,
                                                         const MappingOptions& options);
 

@@ -1,6 +1,7 @@
 #pragma once
 // The transfer report: mass, momentum and energies before (FEM) and after (particles), and how far the
 // particles' stresses are from the FEM Gauss-point stresses.
+#include <span>
 #include <vector>
 
 #include "bridge/stress_recovery.hpp"
@@ -32,6 +33,6 @@ struct TransferReport {
 /// configuration, 2x2 Gauss); the stress difference compares each FEM Gauss point's stress with the
 /// particles' field (sum_a N_a sigma_a) at the same point, |s| = sqrt(s:s) with the full tensor.
 TransferReport make_report(const TransferState& state, const std::vector<Stress6>& nodal_stress,
-                           const std::vector<mpm::io::ParticleRecord>& particles);
+                           std::span<const mpm::io::ParticleRecord> particles);
 
 }  // namespace bridge

@@ -121,11 +121,12 @@ int main(int argc, char** argv) {
       ro.time = 1.0;
       bridge::AssembledState a;
       t_read.push_back(seconds([&] { a = bridge::read_fem_state(bridge::read_fem_model(model), ro); }));
-      std::vector<mpm::io::ParticleRecord> particles;
+      bridge::ParticleList particles;
       t_map.push_back(seconds([&] {
         particles = bridge::generate_particles(a.state, bridge::recover_nodal_stress(a.state, bridge::Recovery::InverseDistance), {});
       }));
       count = particles.size();
+      fs::remove_all(dir / "phase");
       fs::create_directories(dir / "phase");
       t_h5.push_back(seconds([&] { mpm::io::write_particle_table(dir / "phase/particles.h5", particles); }));
       t_deck.push_back(seconds([&] {
@@ -137,6 +138,8 @@ int main(int argc, char** argv) {
       const char* args[] = {"fem2mpm", "--model", model.c_str(), "--disp", disp.c_str(), "--vel", vel.c_str(), "--stress",
                             stress.c_str(), "--units", "kN", "--time", "1", "--out", out.c_str(), "--quiet"};
       int rc = 0;
+      fs::remove_all(dir / "deck");  // a fresh output folder, as a user's first run (deleting is not timed)
+      fs::remove_all(dir / "phase");
       t_total.push_back(seconds([&] { rc = bridge::run_cli(16, args, std::cout, std::cerr); }));
       if (rc != 0) return 1;
     }

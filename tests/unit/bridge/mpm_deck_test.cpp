@@ -108,7 +108,8 @@ TEST(MpmDeck, DefaultsAndErrors) {
   mpm::io::ParticleRecord outside{};
   outside.coord_x = 50;
   o.extent = std::array<double, 4>{0, 30, 0, 10};
-  EXPECT_THROW(bridge::build_deck(st, {outside}, o), common::InputError);
+  const std::vector<mpm::io::ParticleRecord> one{outside};
+  EXPECT_THROW(bridge::build_deck(st, one, o), common::InputError);
   o = {};
   o.scheme = "leapfrog";
   EXPECT_THROW(bridge::build_deck(st, {}, o), common::InputError);

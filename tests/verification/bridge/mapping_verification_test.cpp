@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "bridge/particle_mapping.hpp"
 #include "bridge/stress_recovery.hpp"
@@ -175,6 +176,20 @@ TEST(BridgeMapping, RigidBodyVelocityIsExactAndMomentumIsConserved) {
   EXPECT_CLOSE(rep.particles.momentum.x(), rep.fem.momentum.x(), 1e-9, 1e-12);
   EXPECT_CLOSE(rep.particles.momentum.y(), rep.fem.momentum.y(), 1e-9, 1e-12);
   EXPECT_CLOSE(rep.particles.mass, rep.fem.mass, 0, 1e-13);
+}
+
+// Deterministic to the byte, padding included (DESIGN.md: same input -> bit-identical output).
+TEST(BridgeMapping, RecordsAreByteReproducible) {
+  MeshSpec s;
+  const auto st = bridge_test::make_state(s, quadratic_field);
+  const auto nodal = bridge::recover_nodal_stress(st, Recovery::PatchRecovery);
+  const auto a = bridge::generate_particles(st, nodal, {});
+  const auto b = bridge::generate_particles(st, nodal, {});
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(mpm::io::ParticleRecord)), 0);
+  // The padding after `status` (bytes 241-243) and `nstate_vars` (252-255) is zero.
+  const auto* bytes = reinterpret_cast<const unsigned char*>(a.data());
+  for (int k : {241, 242, 243, 252, 253, 254, 255}) EXPECT_EQ(bytes[k], 0) << "byte " << k;
 }
 
 TEST(BridgeMapping, InvertedElementsAreNamed) {
