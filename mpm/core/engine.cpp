@@ -200,15 +200,20 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   order_.reserve(n);
   sorted_.resize(n);
   bucket_.resize(static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
-  chunk_.resize(static_cast<std::size_t>(threads_) + 1);
+  const std::size_t max_chunks = n / kChunkParticles + 2;
+  chunk_.resize(max_chunks + 1);
+  chunk_row0_.resize(max_chunks);
+  chunk_row1_.resize(max_chunks);
+  chunk_offset_.resize(max_chunks);
+  row_first_chunk_.resize(static_cast<std::size_t>(ny_));
+  local_.resize(n);
   mass_.assign(nodes_, 0.0);
   momentum_.assign(2 * nodes_, 0.0);
   force_.assign(2 * nodes_, 0.0);
   velocity_.assign(2 * nodes_, 0.0);
   updated_.assign(4 * nodes_, 0.0);
   if (smoothing_ == StressSmoothing::NodalStrain) nodal_strain_.assign(3 * nodes_, 0.0);
-  thread_grid_.assign(static_cast<std::size_t>(threads_), std::vector<double>(5 * nodes_, 0.0));
-  problems_.resize(static_cast<std::size_t>(threads_));
+  problems_.resize(max_chunks);
 
   order_.resize(n);
   for (std::size_t p = 0; p < n; ++p) order_[p] = static_cast<std::uint32_t>(p);
@@ -281,29 +286,51 @@ void Engine::sort_particles() {
     bj0_ = std::max(cmin_j - 1, 0);
     bj1_ = std::min(cmax_j + 3, ny_);
   }
-  // Thread chunks of about n / threads particles, each cut at a cell boundary.
+  // Chunks of about kChunkParticles particles, cut at cell boundaries. Their number and extent depend
+  // only on the particle state (not on the thread count): threads take chunks dynamically, each chunk
+  // scatters into its own band of grid rows, and bands are summed in chunk order.
+  chunks_ = n == 0 ? 0 : (n + kChunkParticles - 1) / kChunkParticles;
   chunk_[0] = 0;
-  for (int t = 1; t < threads_; ++t) {
-    std::size_t k = std::max(chunk_[t - 1], n * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads_));
+  for (std::size_t c = 1; c < chunks_; ++c) {
+    std::size_t k = std::max(chunk_[c - 1], n * c / chunks_);
     while (k > 0 && k < n && cur_.key[order_[k]] == cur_.key[order_[k - 1]]) ++k;
-    chunk_[t] = k;
+    chunk_[c] = k;
   }
-  chunk_[threads_] = n;
+  chunk_[chunks_] = n;
+  box_width_ = bi1_ - bi0_;
+  std::size_t offset = 0;
+  for (std::size_t c = 0; c < chunks_; ++c) {
+    if (chunk_[c] == chunk_[c + 1]) {
+      chunk_row0_[c] = chunk_row1_[c] = bj0_;
+    } else {
+      const int j_first = static_cast<int>(cur_.key[order_[chunk_[c]]] / cells_x_);
+      const int j_last = static_cast<int>(cur_.key[order_[chunk_[c + 1] - 1]] / cells_x_);
+      chunk_row0_[c] = std::max(j_first - 1, bj0_);
+      chunk_row1_[c] = std::min(j_last + 3, bj1_);
+    }
+    chunk_offset_[c] = offset;
+    offset += static_cast<std::size_t>(chunk_row1_[c] - chunk_row0_[c]) * static_cast<std::size_t>(box_width_) * 5;
+  }
+  if (pool_.size() < offset) pool_.resize(offset);  // grows rarely; no allocation in a steady state
+  std::size_t first = 0;
+  for (int j = bj0_; j < bj1_; ++j) {
+    while (first < chunks_ && chunk_row1_[first] <= j) ++first;
+    row_first_chunk_[static_cast<std::size_t>(j)] = first;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------------
 // The step
 // ---------------------------------------------------------------------------------------------------
 void Engine::step() {
-  for (auto& p : problems_) p = Problem{};
+  for (std::size_t c = 0; c < chunks_; ++c) problems_[c] = Problem{};
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
 #pragma omp parallel num_threads(threads_)
   {
-    const int t = omp_get_thread_num();
     if (gimp)
-      run_step<GimpShape>(t);
+      run_step<GimpShape>();
     else
-      run_step<LinearShape>(t);
+      run_step<LinearShape>();
   }
   throw_first_error();
   std::swap(cur_, nxt_);
@@ -315,54 +342,83 @@ void Engine::step() {
 
 /// One explicit step; USF, USL and MUSL differ only in the order of the calls (CB-Geo
 /// include/solvers/mpm_scheme/mpm_scheme_{usf,usl,musl}.tcc; Bardenhagen 2002 for USF/USL, Sulsky,
-/// Zhou & Schreyer 1995 for MUSL). Each barrier separates a particle phase from a node phase.
+/// Zhou & Schreyer 1995 for MUSL). Particle phases run over chunks, node phases over the rows of the
+/// active box; each barrier separates a particle phase from a node phase. reduce_row,
+/// nodal_velocity_row and integrate_row work node by node on the same row: no barrier between them.
 template <class Shape>
-void Engine::run_step(int t) {
+void Engine::run_step() {
   switch (scheme_) {
     case io::Scheme::USF:  // update stress first: strain rate from the momentum velocity
-      p2g<Shape>(t, /*shape_functions=*/true, /*mass_momentum=*/true, /*forces=*/false);
+      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, /*shape_functions=*/true, /*mass_momentum=*/true, /*forces=*/false); });
 #pragma omp barrier
-      reduce_grid(t, true, true, false);
+      for_each_row([&](int j) {
+        reduce_row(j, true, true, false);
+        nodal_velocity_row(j);
+      });
 #pragma omp barrier
-      compute_nodal_velocity(t);
+      update_stress<Shape>(velocity_.data(), 2, /*strain_ready=*/false);
 #pragma omp barrier
-      update_stress<Shape>(t, velocity_.data(), 2, /*strain_ready=*/false);
-      p2g<Shape>(t, false, false, /*forces=*/true);  // forces from the updated stress (next buffer)
+      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, false, false, /*forces=*/true); });  // from the updated stress
 #pragma omp barrier
-      reduce_grid(t, false, false, true);
+      for_each_row([&](int j) {
+        reduce_row(j, false, false, true);
+        integrate_row(j);
+      });
 #pragma omp barrier
-      integrate_nodes(t);
-#pragma omp barrier
-      g2p<Shape>(t, false, false);
+      for_each_chunk([&](std::size_t c) { g2p<Shape>(c, false, false); });
       break;
     case io::Scheme::USL:  // update stress last: strain rate from the updated grid velocity
-      p2g<Shape>(t, true, true, true);
+      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, true, true, true); });
 #pragma omp barrier
-      reduce_grid(t, true, true, true);
+      for_each_row([&](int j) {
+        reduce_row(j, true, true, true);
+        nodal_velocity_row(j);
+        integrate_row(j);
+      });
 #pragma omp barrier
-      compute_nodal_velocity(t);
-      integrate_nodes(t);
+      // USL: g2p also takes the strain increment from the same updated grid velocity.
+      for_each_chunk([&](std::size_t c) { g2p<Shape>(c, /*strain_increments=*/true, false); });
 #pragma omp barrier
-      g2p<Shape>(t, /*strain_increments=*/true, false);  // USL: the strain rate uses the same updated velocity
-      update_stress<Shape>(t, updated_.data(), 4, /*strain_ready=*/true);
+      update_stress<Shape>(updated_.data(), 4, /*strain_ready=*/true);
       break;
     case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
-      p2g<Shape>(t, true, true, true);
+      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, true, true, true); });
 #pragma omp barrier
-      reduce_grid(t, true, true, true);
+      for_each_row([&](int j) {
+        reduce_row(j, true, true, true);
+        nodal_velocity_row(j);
+        integrate_row(j);
+      });
 #pragma omp barrier
-      compute_nodal_velocity(t);
-      integrate_nodes(t);
+      // MUSL: g2p also maps the updated momentum m N v back to the nodes.
+      for_each_chunk([&](std::size_t c) { g2p<Shape>(c, false, /*remap_momentum=*/true); });
 #pragma omp barrier
-      g2p<Shape>(t, false, /*remap_momentum=*/true);  // also maps m v_new back to the nodes
+      for_each_row([&](int j) {
+        reduce_row(j, false, true, false);
+        nodal_velocity_row(j);
+      });
 #pragma omp barrier
-      reduce_grid(t, false, true, false);
-#pragma omp barrier
-      compute_nodal_velocity(t);
-#pragma omp barrier
-      update_stress<Shape>(t, velocity_.data(), 2, false);
+      update_stress<Shape>(velocity_.data(), 2, /*strain_ready=*/false);
       break;
   }
+}
+
+template <class F>
+void Engine::for_each_chunk(F&& f) {
+#pragma omp for schedule(dynamic, 1) nowait
+  for (std::size_t c = 0; c < chunks_; ++c) f(c);
+}
+
+template <class F>
+void Engine::for_each_row(F&& f) {
+#pragma omp for schedule(static) nowait
+  for (int j = bj0_; j < bj1_; ++j) f(j);
+}
+
+double* Engine::cleared_band(std::size_t c) {
+  double* g = pool_.data() + chunk_offset_[c];
+  std::fill_n(g, static_cast<std::size_t>(chunk_row1_[c] - chunk_row0_[c]) * static_cast<std::size_t>(box_width_) * 5, 0.0);
+  return g;
 }
 
 /// Particle-to-grid transfer (Sulsky et al. 1994, eqs. 14-17): nodal mass sum m N, momentum sum m N v,
@@ -370,12 +426,13 @@ void Engine::run_step(int t) {
 /// (once per step) and stored for the later phases. Reads the current particle state through order_,
 /// except the forces of USF, which use the stress and volume just updated (next buffer).
 template <class Shape>
-void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
+void Engine::p2g(std::size_t c, bool shape_functions, bool mass_momentum, bool forces) {
   constexpr int W = Shape::kWidth;
-  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
+  double* g = cleared_band(c);
+  const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   const double ihx = inv_hx_, ihy = inv_hy_;
   const bool forces_from_next = forces && !mass_momentum;
-  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const std::uint32_t p = order_[k];
     double* wk = &weights_[k * 4 * W];
     if (shape_functions) {
@@ -387,6 +444,7 @@ void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
         wk[3 * W + a] *= ihy;
       }
       base_[k] = bi + bj * nx_;
+      local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
     }
     const double* wx = wk;
     const double* wy = wk + W;
@@ -398,9 +456,9 @@ void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
     const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
     const double sxx = sp[0], syy = sp[1], sxy = sp[3];
     const double mgx = m * gx_, mgy = m * gy_;
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      double* gn = g + 5 * node_row;
+    double* band_row = g + local_[k];
+    for (int b = 0; b < W; ++b, band_row += row_stride) {
+      double* gn = band_row;
       for (int a = 0; a < W; ++a, gn += 5) {
         const double N = wx[a] * wy[b];
         if (mass_momentum) {
@@ -418,40 +476,34 @@ void Engine::p2g(int t, bool shape_functions, bool mass_momentum, bool forces) {
   }
 }
 
-/// Sums the per-thread grids in thread order (deterministic) over this thread's rows of the active box,
-/// and zeroes what it summed (the buffers are zero between transfers).
-void Engine::reduce_grid(int t, bool mass, bool momentum, bool forces) {
-  const int rows = bj1_ - bj0_;
-  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
-  for (int j = j0; j < j1; ++j) {
-    for (int i = bi0_; i < bi1_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-      double s[5] = {0, 0, 0, 0, 0};
-      for (auto& buf : thread_grid_) {
-        double* gn = &buf[5 * n];
-        for (int f = 0; f < 5; ++f) {
-          s[f] += gn[f];
-          gn[f] = 0.0;
-        }
-      }
-      if (mass) mass_[n] = s[0];
-      if (momentum) {
-        momentum_[2 * n] = s[1];
-        momentum_[2 * n + 1] = s[2];
-      }
-      if (forces) {
-        force_[2 * n] = s[3];
-        force_[2 * n + 1] = s[4];
-      }
+/// Sums the chunks' bands over one row of the active box, in chunk order (deterministic for any
+/// thread count).
+void Engine::reduce_row(int j, bool mass, bool momentum, bool forces) {
+  for (int i = bi0_; i < bi1_; ++i) {
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    double s[5] = {0, 0, 0, 0, 0};
+    for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
+      if (chunk_row0_[c] > j && chunk_[c] != chunk_[c + 1]) break;  // bands are ordered by row
+      if (j < chunk_row0_[c] || j >= chunk_row1_[c]) continue;
+      const double* gn = pool_.data() + chunk_offset_[c] +
+                         5 * (static_cast<std::size_t>(j - chunk_row0_[c]) * box_width_ + (i - bi0_));
+      for (int f = 0; f < 5; ++f) s[f] += gn[f];
+    }
+    if (mass) mass_[n] = s[0];
+    if (momentum) {
+      momentum_[2 * n] = s[1];
+      momentum_[2 * n + 1] = s[2];
+    }
+    if (forces) {
+      force_[2 * n] = s[3];
+      force_[2 * n + 1] = s[4];
     }
   }
 }
 
 /// Nodal velocity = momentum / mass, then the velocity constraints (CB-Geo Node::compute_velocity).
-void Engine::compute_nodal_velocity(int t) {
-  const int rows = bj1_ - bj0_;
-  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
-  for (int j = j0; j < j1; ++j) {
+void Engine::nodal_velocity_row(int j) {
+  {
     for (int i = bi0_; i < bi1_; ++i) {
       const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
       double vx = 0.0, vy = 0.0;
@@ -470,10 +522,8 @@ void Engine::compute_nodal_velocity(int t) {
 /// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m with Cundall's local damping
 /// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), friction, then
 /// v_new = v + a dt, and the velocity constraints (prescribed velocity, zero acceleration).
-void Engine::integrate_nodes(int t) {
-  const int rows = bj1_ - bj0_;
-  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
-  for (int j = j0; j < j1; ++j) {
+void Engine::integrate_row(int j) {
+  {
     for (int i = bi0_; i < bi1_; ++i) {
       const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
       double* u = &updated_[4 * n];
@@ -505,8 +555,8 @@ void Engine::integrate_nodes(int t) {
   }
 }
 
-void Engine::report(int t, std::size_t k, int kind, std::int64_t id, double a, double b) {
-  Problem& pr = problems_[static_cast<std::size_t>(t)];
+void Engine::report(std::size_t c, std::size_t k, int kind, std::int64_t id, double a, double b) {
+  Problem& pr = problems_[c];
   if (k < pr.k) pr = Problem{k, kind, id, a, b};
 }
 
@@ -518,11 +568,12 @@ void Engine::report(int t, std::size_t k, int kind, std::int64_t id, double a, d
 /// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
 /// (Sulsky, Zhou & Schreyer 1995, eq. 20), into this thread's grid, in the same pass.
 template <class Shape>
-void Engine::g2p(int t, bool strain_increments, bool remap_momentum) {
+void Engine::g2p(std::size_t c, bool strain_increments, bool remap_momentum) {
   constexpr int W = Shape::kWidth;
-  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
+  double* g = remap_momentum ? cleared_band(c) : nullptr;
+  const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   const double h = std::min(grid_.hx, grid_.hy);
-  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const std::uint32_t p = order_[k];
     const double* wx = &weights_[k * 4 * W];
     const double* wy = wx + W;
@@ -565,9 +616,9 @@ void Engine::g2p(int t, bool strain_increments, bool remap_momentum) {
     if (remap_momentum) {
       const double m = cur_.mass[p];
       const double mvx = m * vx, mvy = m * vy;
-      std::size_t row = static_cast<std::size_t>(base_[k]);
-      for (int b = 0; b < W; ++b, row += static_cast<std::size_t>(nx_)) {
-        double* gn = g + 5 * row;
+      double* band_row = g + local_[k];
+      for (int b = 0; b < W; ++b, band_row += row_stride) {
+        double* gn = band_row;
         for (int a = 0; a < W; ++a, gn += 5) {
           const double N = wx[a] * wy[b];
           gn[1] += mvx * N;
@@ -581,9 +632,9 @@ void Engine::g2p(int t, bool strain_increments, bool remap_momentum) {
     nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
     const double speed = std::sqrt(vx * vx + vy * vy);
     if (!std::isfinite(speed) || !std::isfinite(x) || !std::isfinite(y)) {
-      report(t, k, 1, cur_.id[p], vx, vy);
+      report(c, k, 1, cur_.id[p], vx, vy);
     } else if (speed * dt_ > h) {
-      report(t, k, 2, cur_.id[p], speed, h / dt_);
+      report(c, k, 2, cur_.id[p], speed, h / dt_);
     }
     // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
     // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
@@ -593,7 +644,7 @@ void Engine::g2p(int t, bool strain_increments, bool remap_momentum) {
     if (x < grid_.xmin - mx || x > grid_.xmax + mx || y < grid_.ymin - my || y > grid_.ymax + my ||
         !std::isfinite(x) || !std::isfinite(y)) {
       nxt_.key[k] = kRemoved;
-      if (locate_) report(t, k, 3, cur_.id[p], x, y);
+      if (locate_) report(c, k, 3, cur_.id[p], x, y);
     } else {
       nxt_.key[k] = cell_key(x, y);
     }
@@ -622,31 +673,38 @@ struct MixedMaterials {
 
 
 /// Stress update: strain increment from the grid velocity at the particle, the selected checkerboard
-/// remedy, then the material's stress update and the carried state (next buffer).
+/// remedy, then the material's stress update and the carried state (next buffer). The nodal_strain
+/// remedy needs every chunk's increments at the nodes first, hence its barriers.
 template <class Shape>
-void Engine::update_stress(int t, const double* grid_velocity, int stride, bool strain_ready) {
-  if (!strain_ready) compute_strain_increments<Shape>(t, grid_velocity, stride);
-  if (smoothing_ == StressSmoothing::CellVolumetric) average_volumetric_strain_per_cell(t);
-  if (smoothing_ == StressSmoothing::NodalStrain) smooth_strain_at_nodes<Shape>(t);  // has barriers
-  const std::size_t k0 = chunk_[t], k1 = chunk_[t + 1];
-  if (uniform_material_) {
-    const Material& m = materials_[0];
-    if (m.type == io::MaterialType::MohrCoulomb2D)
-      update_material_state(k0, k1, t, SameMaterial<MohrCoulomb>{m.mohr_coulomb});
-    else
-      update_material_state(k0, k1, t, SameMaterial<LinearElastic>{m.elastic});
+void Engine::update_stress(const double* grid_velocity, int stride, bool strain_ready) {
+  if (smoothing_ == StressSmoothing::NodalStrain) {
+    for_each_chunk([&](std::size_t c) {
+      if (!strain_ready) compute_strain_increments<Shape>(c, grid_velocity, stride);
+      scatter_strain_increments<Shape>(c);
+    });
+#pragma omp barrier
+    for_each_row([&](int j) { nodal_strain_row(j); });
+#pragma omp barrier
+    for_each_chunk([&](std::size_t c) {
+      gather_strain_increments<Shape>(c);
+      update_material_state(c);
+    });
   } else {
-    update_material_state(k0, k1, t, MixedMaterials{materials_});
+    for_each_chunk([&](std::size_t c) {
+      if (!strain_ready) compute_strain_increments<Shape>(c, grid_velocity, stride);
+      if (smoothing_ == StressSmoothing::CellVolumetric) average_volumetric_strain_per_cell(c);
+      update_material_state(c);
+    });
   }
 }
 
 /// (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx), the gradient of the grid velocity at the
 /// particle (CB-Geo compute_strain_rate, without its 1e-15 flush to zero).
 template <class Shape>
-void Engine::compute_strain_increments(int t, const double* gv, int stride) {
+void Engine::compute_strain_increments(std::size_t c, const double* gv, int stride) {
   constexpr int W = Shape::kWidth;
   const std::size_t st = static_cast<std::size_t>(stride);
-  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const double* wk = &weights_[k * 4 * W];
     const double* wx = wk;
     const double* wy = wk + W;
@@ -672,11 +730,11 @@ void Engine::compute_strain_increments(int t, const double* gv, int stride) {
 }
 
 /// cell_volumetric remedy: each particle's volumetric increment (dexx + deyy) is replaced by its cell's
-/// volume-weighted mean, split equally between dexx and deyy (the deviatoric part is kept). Thread
-/// chunks start at cell boundaries, so each cell is handled by one thread.
-void Engine::average_volumetric_strain_per_cell(int t) {
-  const std::size_t k1 = chunk_[t + 1];
-  std::size_t a = chunk_[t];
+/// volume-weighted mean, split equally between dexx and deyy (the deviatoric part is kept). Chunks
+/// start at cell boundaries, so each cell lies in one chunk.
+void Engine::average_volumetric_strain_per_cell(std::size_t c) {
+  const std::size_t k1 = chunk_[c + 1];
+  std::size_t a = chunk_[c];
   while (a < k1) {
     const std::int64_t key = cur_.key[order_[a]];
     std::size_t b = a;
@@ -698,19 +756,20 @@ void Engine::average_volumetric_strain_per_cell(int t) {
   }
 }
 
-/// nodal_strain remedy: project the strain increment to the nodes (mass-weighted) and back.
+/// nodal_strain remedy, 1/3: the mass-weighted strain increments m N de into the chunk's band.
 template <class Shape>
-void Engine::smooth_strain_at_nodes(int t) {
+void Engine::scatter_strain_increments(std::size_t c) {
   constexpr int W = Shape::kWidth;
-  double* g = thread_grid_[static_cast<std::size_t>(t)].data();
-  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+  double* g = cleared_band(c);
+  const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
+  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const double* wx = &weights_[k * 4 * W];
     const double* wy = wx + W;
     const double m = cur_.mass[order_[k]];
     const double* de = &dstrain_[3 * k];
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      double* gn = g + 5 * node_row;
+    double* band_row = g + local_[k];
+    for (int b = 0; b < W; ++b, band_row += row_stride) {
+      double* gn = band_row;
       for (int a = 0; a < W; ++a, gn += 5) {
         const double mN = m * wx[a] * wy[b];
         gn[0] += mN * de[0];
@@ -719,26 +778,30 @@ void Engine::smooth_strain_at_nodes(int t) {
       }
     }
   }
-#pragma omp barrier
-  const int rows = bj1_ - bj0_;
-  const int j0 = bj0_ + rows * t / threads_, j1 = bj0_ + rows * (t + 1) / threads_;
-  for (int j = j0; j < j1; ++j) {
-    for (int i = bi0_; i < bi1_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-      double s[3] = {0, 0, 0};
-      for (auto& buf : thread_grid_) {
-        double* gn = &buf[5 * n];
-        for (int f = 0; f < 3; ++f) {
-          s[f] += gn[f];
-          gn[f] = 0.0;
-        }
-      }
-      const double inv_m = mass_[n] > kMassTolerance ? 1.0 / mass_[n] : 0.0;
-      for (int f = 0; f < 3; ++f) nodal_strain_[3 * n + f] = s[f] * inv_m;
+}
+
+/// nodal_strain remedy, 2/3: nodal strain increment = sum m N de / nodal mass (chunk order).
+void Engine::nodal_strain_row(int j) {
+  for (int i = bi0_; i < bi1_; ++i) {
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    double s[3] = {0, 0, 0};
+    for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
+      if (chunk_row0_[c] > j && chunk_[c] != chunk_[c + 1]) break;
+      if (j < chunk_row0_[c] || j >= chunk_row1_[c]) continue;
+      const double* gn = pool_.data() + chunk_offset_[c] +
+                         5 * (static_cast<std::size_t>(j - chunk_row0_[c]) * box_width_ + (i - bi0_));
+      for (int f = 0; f < 3; ++f) s[f] += gn[f];
     }
+    const double inv_m = mass_[n] > kMassTolerance ? 1.0 / mass_[n] : 0.0;
+    for (int f = 0; f < 3; ++f) nodal_strain_[3 * n + f] = s[f] * inv_m;
   }
-#pragma omp barrier
-  for (std::size_t k = chunk_[t]; k < chunk_[t + 1]; ++k) {
+}
+
+/// nodal_strain remedy, 3/3: the particle's increment interpolated back, sum N de_i.
+template <class Shape>
+void Engine::gather_strain_increments(std::size_t c) {
+  constexpr int W = Shape::kWidth;
+  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const double* wx = &weights_[k * 4 * W];
     const double* wy = wx + W;
     double e[3] = {0, 0, 0};
@@ -759,11 +822,26 @@ void Engine::smooth_strain_at_nodes(int t) {
   }
 }
 
+/// Material dispatch for one chunk: one templated loop per material model when all particles share a
+/// material, else a switch on the material type per particle (no virtual call either way).
+void Engine::update_material_state(std::size_t c) {
+  const std::size_t k0 = chunk_[c], k1 = chunk_[c + 1];
+  if (uniform_material_) {
+    const Material& m = materials_[0];
+    if (m.type == io::MaterialType::MohrCoulomb2D)
+      update_material_state(k0, k1, c, SameMaterial<MohrCoulomb>{m.mohr_coulomb});
+    else
+      update_material_state(k0, k1, c, SameMaterial<LinearElastic>{m.elastic});
+  } else {
+    update_material_state(k0, k1, c, MixedMaterials{materials_});
+  }
+}
+
 /// The material's stress update with the (possibly smoothed) increment, volume *= 1 + de_v (CB-Geo
 /// update_volume, here with the particle's own increment), the strain sums, and the particle fields
 /// carried unchanged, all into the next buffer.
 template <class Dispatch>
-void Engine::update_material_state(std::size_t k0, std::size_t k1, int t, const Dispatch& dispatch) {
+void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch) {
   for (std::size_t k = k0; k < k1; ++k) {
     const std::uint32_t p = order_[k];
     const double* de = &dstrain_[3 * k];
@@ -788,7 +866,7 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, int t, const 
     nxt_.nsize_y[k] = cur_.nsize_y[p];
     nxt_.lx[k] = cur_.lx[p];
     nxt_.ly[k] = cur_.ly[p];
-    if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(t, k, 4, cur_.id[p], s[0], s[1]);
+    if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(c, k, 4, cur_.id[p], s[0], s[1]);
   }
 }
 

@@ -5,9 +5,11 @@
 // reads the current arrays through `order_` (the live particles sorted by cell, then id) and writes the
 // next arrays in that order; the buffers are swapped only when the whole step succeeded, so after a
 // NumericalError the engine still holds the last good state. Shape-function weights are computed once
-// per particle per step and stored. P2G scatters into one private grid buffer per thread (lock-free),
-// reduced in thread order over the active node box (deterministic at a fixed thread count). Thread
-// chunks of particles are cut at cell boundaries, so per-cell work (the checkerboard remedy) is local.
+// per particle per step and stored. The sorted particles are cut into chunks of ~2048 at cell
+// boundaries (a function of the state only); threads take chunks dynamically (a preempted thread on a
+// shared machine does not hold the others back), each chunk scatters lock-free into its own band of
+// grid rows, and the bands are summed in chunk order: results are bit-identical for ANY thread count.
+// Per-cell work (the cell_volumetric remedy) stays inside one chunk.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -65,30 +67,39 @@ class Engine {
   static constexpr std::int64_t kRemoved = -1;
 
  private:
-  // --- the phases of a step (called by every thread t inside one parallel region) ---
+  // --- the phases of a step (inside one parallel region; particle phases per chunk, node phases per row)
   template <class Shape>
-  void p2g(int t, bool shape_functions, bool mass_momentum, bool forces);
-  void reduce_grid(int t, bool mass, bool momentum, bool forces);
-  void compute_nodal_velocity(int t);
-  void integrate_nodes(int t);
+  void run_step();
+  template <class F>
+  void for_each_chunk(F&& f);  ///< dynamic schedule over the chunks (no barrier at the end)
+  template <class F>
+  void for_each_row(F&& f);  ///< static schedule over the rows of the active node box (no barrier)
   template <class Shape>
-  void g2p(int t, bool strain_increments, bool remap_momentum);
+  void p2g(std::size_t c, bool shape_functions, bool mass_momentum, bool forces);
+  void reduce_row(int j, bool mass, bool momentum, bool forces);
+  void nodal_velocity_row(int j);
+  void integrate_row(int j);
   template <class Shape>
-  void update_stress(int t, const double* grid_velocity, int stride, bool strain_ready);
+  void g2p(std::size_t c, bool strain_increments, bool remap_momentum);
   template <class Shape>
-  void run_step(int t);
+  void update_stress(const double* grid_velocity, int stride, bool strain_ready);
+  template <class Shape>
+  void compute_strain_increments(std::size_t c, const double* grid_velocity, int stride);
+  void average_volumetric_strain_per_cell(std::size_t c);
+  template <class Shape>
+  void scatter_strain_increments(std::size_t c);
+  void nodal_strain_row(int j);
+  template <class Shape>
+  void gather_strain_increments(std::size_t c);
+  void update_material_state(std::size_t c);
+  template <class Dispatch>
+  void update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch);
+  double* cleared_band(std::size_t c);  ///< chunk c's band of the grid pool, zeroed
 
   // --- serial parts ---
-  void sort_particles();  ///< order_ from cur_.key: by cell, then id; drops removed particles
+  void sort_particles();  ///< order_ from cur_.key: by cell, then id; drops removed particles; chunks
   void throw_first_error() const;
   std::int64_t cell_key(double x, double y) const;
-  template <class Shape>
-  void compute_strain_increments(int t, const double* grid_velocity, int stride);
-  void average_volumetric_strain_per_cell(int t);
-  template <class Shape>
-  void smooth_strain_at_nodes(int t);
-  template <class Dispatch>
-  void update_material_state(std::size_t k0, std::size_t k1, int t, const Dispatch& dispatch);
 
   // grid
   io::Grid grid_;
@@ -104,8 +115,13 @@ class Engine {
   std::vector<double> velocity_;  ///< 2 per node: momentum / mass, velocity constraints applied
   std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
   std::vector<double> nodal_strain_;  ///< 3 per node: smoothed strain increment (nodal_strain remedy)
-  std::vector<std::vector<double>> thread_grid_;  ///< per thread: 5 per node (m, px, py, fx, fy)
-  std::vector<std::uint8_t> fixed_;               ///< bit 0: x fixed, bit 1: y fixed
+  /// Per chunk: a band of grid rows [chunk_row0_, chunk_row1_) x box columns, 5 values per node
+  /// (m, px, py, fx, fy), at chunk_offset_ in pool_; summed in chunk order by reduce_row.
+  std::vector<double> pool_;
+  std::vector<int> chunk_row0_, chunk_row1_;
+  std::vector<std::size_t> chunk_offset_;
+  std::vector<std::size_t> row_first_chunk_;  ///< per node row: the first chunk whose band reaches it
+  int box_width_ = 0;  std::vector<std::uint8_t> fixed_;               ///< bit 0: x fixed, bit 1: y fixed
   std::vector<double> fixed_velocity_;            ///< 2 per node
   std::vector<std::int8_t> friction_dir_;         ///< -1: none
   std::vector<std::int8_t> friction_sign_;
@@ -115,9 +131,12 @@ class Engine {
   ParticleArrays cur_, nxt_;
   std::vector<std::uint32_t> order_;      ///< live particles (storage index in cur_), by cell then id
   std::vector<std::int32_t> base_;        ///< per iteration index: stencil's first node
+  std::vector<std::int32_t> local_;       ///< per iteration index: stencil's first node in the chunk's band
   std::vector<double> weights_;           ///< per iteration index: wx, wy, dwx/h, dwy/h (4 * width)
   std::vector<double> dstrain_;           ///< per iteration index: 3 (scratch for the stress update)
-  std::vector<std::size_t> chunk_;        ///< threads + 1 boundaries, at cell boundaries
+  std::vector<std::size_t> chunk_;        ///< chunks_ + 1 boundaries (iteration indices), at cell boundaries
+  std::size_t chunks_ = 0;
+  static constexpr std::size_t kChunkParticles = 2048;  ///< target chunk size
   std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
   std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
 
@@ -134,7 +153,7 @@ class Engine {
   long long step_index_ = 0;
   int threads_ = 1;
 
-  /// The first problem a thread met in a step (by iteration index), reported after the step.
+  /// The first problem a chunk met in a step (by iteration index), reported after the step.
   struct Problem {
     std::size_t k = static_cast<std::size_t>(-1);
     int kind = 0;  ///< 1 NaN velocity, 2 runaway velocity, 3 left the grid, 4 NaN stress
@@ -142,7 +161,7 @@ class Engine {
     double a = 0, b = 0;
   };
   std::vector<Problem> problems_;
-  void report(int t, std::size_t k, int kind, std::int64_t id, double a, double b);
+  void report(std::size_t c, std::size_t k, int kind, std::int64_t id, double a, double b);
 };
 
 }  // namespace mpm::core
