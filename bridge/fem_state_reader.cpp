@@ -45,6 +45,8 @@ std::size_t pick_row(const RecorderFile& file, std::optional<double> time, std::
     return r;
   }
   if (row) return file.find_row(*row);
+  notes.push_back("no --time given: using the last row of " + file.path().string() + " (line " +
+                  std::to_string(file.rows().back().line) + ", t = " + fmt(file.rows().back().time) + ")");
   return file.rows().size() - 1;
 }
 
@@ -141,13 +143,10 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   const double factor = options.units == Units::kN ? 1000.0 : 1.0;  // stress and density to SI
 
   // --- recorder files and the row at the transfer time
+  // Row widths are checked against the layouts first (a file without its time column is caught
+  // there), then the rows at the transfer time are picked.
   const RecorderFile disp(options.disp);
-  const std::size_t disp_row = pick_row(disp, options.time, options.row, out.notes);
-  const double t = disp.rows()[disp_row].time;
-  st.time = t;
-  out.source_row = disp.where(disp_row);
   const RecorderFile stress(options.stress);
-  const std::size_t stress_row = pick_row(stress, t, std::nullopt, out.notes);
 
   // --- node layout of the Node recorders
   std::vector<long> node_tags;
@@ -159,6 +158,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     const std::size_t w = f.data_width();
     if (w == 2 * node_tags.size()) return;
     std::string detected = w % 2 == 0 ? std::to_string(w / 2) + " nodes x 2 dofs" : "not a whole number of nodes x 2 dofs (record -dof 1 2)";
+    if (w + 1 == 2 * node_tags.size()) detected += "; the file seems to have no time column: record with -time";
     throw common::InputError(
         f.where(row), std::to_string(w) + " values after the time column (" + detected + "), but the layout has " +
                           std::to_string(node_tags.size()) + " nodes (" +
@@ -166,7 +166,11 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
                                          : "all model nodes in tag order, " + tag_range_text(node_tags)) +
                           ") x 2 dofs; give the recorder's node order with --nodes");
   };
-  check_node_width(disp, disp_row);
+  check_node_width(disp, disp.rows().size() - 1);
+  const std::size_t disp_row = pick_row(disp, options.time, options.row, out.notes);
+  const double t = disp.rows()[disp_row].time;
+  st.time = t;
+  out.source_row = disp.where(disp_row);
 
   const std::size_t nn = model.nodes.size();
   st.reference.resize(nn);
@@ -184,8 +188,8 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   }
   if (!options.vel.empty()) {
     const RecorderFile vel(options.vel);
+    check_node_width(vel, vel.rows().size() - 1);
     const std::size_t vel_row = pick_row(vel, t, std::nullopt, out.notes);
-    check_node_width(vel, vel_row);
     const auto v = vel.values(vel_row);
     for (std::size_t k = 0; k < node_tags.size(); ++k)
       st.velocity[static_cast<std::size_t>(model.node_index(node_tags[k]))] = Vec2(v[2 * k], v[2 * k + 1]);
@@ -248,14 +252,18 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     if (sw == gp_total * static_cast<std::size_t>(k)) comps = k;
   if (comps == 0) {
     throw common::InputError(
-        stress.where(stress_row),
+        stress.where(stress.rows().size() - 1),
         std::to_string(sw) + " values after the time column, but the layout has " + std::to_string(element_tags.size()) +
             " elements (" + (options.elements ? "--elements " + tag_range_text(element_tags) : "all model elements in tag order, " + tag_range_text(element_tags)) +
             ") with " + std::to_string(gp_total) + " Gauss points: expected " + std::to_string(3 * gp_total) +
             " (stress: sxx syy sxy), " + std::to_string(5 * gp_total) + " (multi-yield stress) or " + std::to_string(6 * gp_total) +
-            " (stress3D); give the recorder's element order with --elements");
+            " (stress3D); give the recorder's element order with --elements" +
+            ((sw + 1) % gp_total == 0 && ((sw + 1) / gp_total == 3 || (sw + 1) / gp_total == 6)
+                 ? std::string("; the file seems to have no time column: record with -time")
+                 : std::string()));
   }
   out.stress_components = comps;
+  const std::size_t stress_row = pick_row(stress, t, std::nullopt, out.notes);
   const auto sv = stress.values(stress_row);
   st.gauss_stress.resize(gp_total);
   for (std::size_t e = 0; e < st.elements.size(); ++e) {

@@ -254,6 +254,13 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
   }
   expect_clean_failure(model + " --disp " + (dir / "folded.out").string() + stress, dir,
                        {"folded.out:5", "non-positive Jacobian", ": 9 15"});
+  // A Node recorder written without -time.
+  {
+    std::istringstream rows(slurp(kCase / "disp.out"));
+    std::ofstream no_time(dir / "notime.out");
+    for (std::string line; std::getline(rows, line);) no_time << line.substr(line.find(' ') + 1) << '\n';
+  }
+  expect_clean_failure(model + " --disp " + (dir / "notime.out").string() + stress, dir, {"notime.out:5", "no time column"});
   // Unknown option value.
   expect_clean_failure(model + disp + stress + " --recovery rbf", dir, {"--recovery", "rbf"});
 }
