@@ -2,6 +2,8 @@
 // convergence tests and the parsers of the analysis chain.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include "common/input_error.hpp"
 #include "fem_tcl/analysis/convergence_test.hpp"
 #include "fem_tcl/analysis/integrator.hpp"
@@ -50,6 +52,28 @@ TEST(LinearSolver, SingularSystemIsANumericalError) {
     s.set_pattern(A);
     EXPECT_THROW(s.factor(), common::NumericalError);
   }
+}
+
+TEST(LinearSolver, GeneralSymmetricIndefiniteAndUnsymmetricSystemsAreSolved) {
+  // symmetric but indefinite: CHOLMOD's LL^T fails, UMFPACK takes over
+  Eigen::SparseMatrix<double> S(2, 2);
+  S.insert(0, 0) = 1.0; S.insert(0, 1) = 2.0; S.insert(1, 0) = 2.0; S.insert(1, 1) = 1.0;
+  // unsymmetric
+  Eigen::SparseMatrix<double> U(2, 2);
+  U.insert(0, 0) = 4.0; U.insert(0, 1) = 1.0; U.insert(1, 0) = -2.0; U.insert(1, 1) = 3.0;
+  for (const auto& A : {S, U}) {
+    LinearSolver s(SolverKind::General);
+    s.set_pattern(A);
+    s.factor();
+    const Eigen::VectorXd b = (Eigen::VectorXd(2) << 1.0, -1.0).finished();
+    Eigen::VectorXd x;
+    s.solve(b, x);
+    EXPECT_LT((Eigen::MatrixXd(A) * x - b).norm(), 1e-14);
+  }
+  // BandSPD on an indefinite matrix is an error, not garbage
+  LinearSolver spd(SolverKind::SymmetricPositiveDefinite);
+  spd.set_pattern(S);
+  EXPECT_THROW(spd.factor(), common::NumericalError);
 }
 
 TEST(LinearSolver, SystemNamesMapOntoTwoSolvers) {
