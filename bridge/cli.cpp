@@ -305,7 +305,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--cfl", o.deck.cfl, "Courant number for the default time step")->capture_default_str()->group("MPM deck");
   app.add_option("--duration", o.deck.duration, "MPM time to run after the transfer, s (nsteps = duration / dt + 1)")->capture_default_str()->group("MPM deck");
   app.add_option("--nsteps", o.deck.nsteps, "number of steps (overrides --duration)")->group("MPM deck");
-  app.add_option("--output-steps", o.deck.output_steps, "write particles every N steps (default: every 0.5 s)")->group("MPM deck");
+  app.add_option("--output-steps", o.deck.output_steps, "write particles every N steps (default: every 0.5 s, at most nsteps - 1)")->group("MPM deck");
   app.add_option("--scheme", o.deck.scheme, "mpm_scheme: usf, usl or musl")->capture_default_str()->group("MPM deck");
   app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC) instead of FLIP")->group("MPM deck");
   app.add_option("--damping", o.deck.damping, "Cundall damping factor")->capture_default_str()->group("MPM deck");

@@ -117,7 +117,9 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
     if (!(options.duration > 0)) throw common::InputError("--duration", "expected a duration > 0");
     d.nsteps = static_cast<long long>(std::ceil(options.duration / d.dt - 1e-9)) + 1;
   }
-  d.output_steps = options.output_steps ? *options.output_steps : std::max<long long>(1, std::llround(0.5 / d.dt));
+  // Default: every 0.5 s, and at least the last step.
+  d.output_steps = options.output_steps ? *options.output_steps
+                                        : std::max<long long>(1, std::min<long long>(std::llround(0.5 / d.dt), d.nsteps - 1));
   if (d.output_steps < 1) throw common::InputError("--output-steps", "expected at least 1");
   if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
   if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")

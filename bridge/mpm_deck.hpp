@@ -31,7 +31,7 @@ struct DeckOptions {
   double cfl = 0.1;
   double duration = 10;                       ///< s of MPM time after the transfer
   std::optional<long long> nsteps;            ///< overrides duration
-  std::optional<long long> output_steps;      ///< default: every 0.5 s
+  std::optional<long long> output_steps;      ///< default: every 0.5 s, at most nsteps - 1
   std::string scheme = "usf";
   bool velocity_update = false;               ///< true: PIC, false: FLIP
   double damping = 0;                         ///< Cundall damping factor
