@@ -157,7 +157,6 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   // 1. Read and check everything (no output yet).
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
-  for (const auto& w : assembled.warnings) err << "fem2mpm: warning: " << w << "\n";
   const TransferState& state = assembled.state;
   if (const auto bad = inverted_elements(state); !bad.empty()) {
     std::string list;
@@ -173,6 +172,8 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   const auto particles = generate_particles(state, nodal, mo);
   timing.map = lap();
   DeckText d = plan_deck(state, particles, deck);  // the last check that can fail on user input
+  // Warnings only now: a failed run prints its one error line and nothing else.
+  for (const auto& w : assembled.warnings) err << "fem2mpm: warning: " << w << "\n";
 
   // 3. Write. The HDF5 file is written (to a temporary name, then renamed) on a second thread while the
   // report and the text files are prepared; the text files are renamed only when both succeeded, and the
