@@ -6,6 +6,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "common/input_error.hpp"
 #include "fem_tcl/tcl/commands.hpp"
 
 namespace fem::tcl {
@@ -150,6 +151,12 @@ bool Interpreter::eval_script(const std::string& script, const std::string& name
   if (Tcl_EvalEx(interp, script.c_str(), static_cast<int>(script.size()), TCL_EVAL_GLOBAL) == TCL_OK) return true;
   message = error_message(interp, name);
   return false;
+}
+
+std::string Interpreter::eval(const std::string& script) {
+  std::string message;
+  if (!eval_script(script, "script", message)) throw common::InputError(message);
+  return Tcl_GetStringResult(context_->interp);
 }
 
 int run_main(int argc, char** argv) {

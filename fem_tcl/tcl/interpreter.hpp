@@ -20,6 +20,8 @@ class Interpreter {
   /// Evaluates a script; on error returns false and sets `message` to "file:line: message".
   bool eval_file(const std::string& path, std::string& message);
   bool eval_script(const std::string& script, const std::string& name, std::string& message);
+  /// Evaluates `script` and returns its Tcl result; throws common::InputError("script:line: message").
+  std::string eval(const std::string& script);
   Context& context() { return *context_; }
   struct Binding;  ///< (context, command entry) handed to Tcl as ClientData
 

@@ -240,3 +240,77 @@ TEST(TclCommands, RecorderTagsAndRemoval) {
 }
 
 }  // namespace
+
+namespace {
+
+constexpr const char* kOneSSPquad = R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1
+fix 1 1 1; fix 2 1 1
+nDMaterial ElasticIsotropic 1 1000.0 0.0
+)tcl";
+
+/// Base reaction Ry (nodes 1 + 2) after each of two LoadControl 0.5 steps, with `pattern_body` in a
+/// Linear pattern and an SSPquad whose body force is b2 = -10 (weight 10).
+std::pair<double, double> base_reactions(const std::string& pattern_body) {
+  Interpreter interp;
+  interp.eval(std::string(kOneSSPquad) + R"tcl(
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0 0.0 -10.0
+timeSeries Linear 1
+pattern Plain 1 1 {)tcl" + pattern_body + R"tcl(}
+constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5; algorithm Newton
+integrator LoadControl 0.5; analysis Static
+)tcl");
+  const auto step = [&] {
+    interp.eval("analyze 1; reactions");
+    return std::stod(interp.eval("expr {[nodeReaction 1 2] + [nodeReaction 2 2]}"));
+  };
+  const double r1 = step();
+  return {r1, step()};
+}
+
+TEST(TclCommands, BodyForceIsAlwaysOnUnlessSelfWeightIsPatterned) {
+  // quirk 1: the element body force is applied in full from the first step
+  const auto plain = base_reactions("");
+  EXPECT_CLOSE(plain.first, 10.0, 1e-12, 1e-12);
+  EXPECT_CLOSE(plain.second, 10.0, 1e-12, 1e-12);
+  // eleLoad -selfWeight replaces it by the pattern-scaled body force
+  const auto ramped = base_reactions("eleLoad -ele 1 -type -selfWeight 0.0 1.0");
+  EXPECT_CLOSE(ramped.first, 5.0, 1e-12, 1e-12);
+  EXPECT_CLOSE(ramped.second, 10.0, 1e-12, 1e-12);
+}
+
+TEST(TclCommands, UniformExcitationLoadsNodalMassesAsMinusMAg) {
+  // Nodal masses only (no element density); a constant ground acceleration ag in x acts as -m ag on the
+  // free nodes. With mass-proportional damping (about critical for the slow mode) the relative response settles on the static
+  // solution under nodal loads -m ag.
+  Interpreter stat;
+  stat.eval(std::string(kOneSSPquad) + R"tcl(
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+timeSeries Constant 1
+pattern Plain 1 1 { load 3 -2.0 0.0; load 4 -2.0 0.0 }
+constraints Plain; numberer Plain; system BandSPD; test NormDispIncr 1e-12 5; algorithm Linear
+integrator LoadControl 1.0; analysis Static
+analyze 1
+)tcl");
+  const double u_static = std::stod(stat.eval("nodeDisp 3 1"));
+  ASSERT_LT(u_static, 0.0);
+  Interpreter dyn;
+  dyn.eval(std::string(kOneSSPquad) + R"tcl(
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+mass 3 1.0 1.0
+node 5 5 5 -mass 7.0 7.0
+fix 5 1 1
+mass 4 1.0 1.0
+timeSeries Constant 2 -factor 2.0
+pattern UniformExcitation 2 1 -accel 2
+rayleigh 10.0 0.0 0.0 0.0
+constraints Plain; numberer Plain; system BandSPD; test NormDispIncr 1e-12 5; algorithm Linear
+integrator Newmark 0.5 0.25; analysis Transient
+analyze 1200 0.005
+)tcl");
+  EXPECT_CLOSE(std::stod(dyn.eval("nodeDisp 3 1")), u_static, 0.0, 1e-6);
+  EXPECT_CLOSE(std::stod(dyn.eval("nodeDisp 4 1")), std::stod(stat.eval("nodeDisp 4 1")), 0.0, 1e-6);
+}
+
+}  // namespace
