@@ -38,6 +38,7 @@ struct CliOptions {
   std::vector<double> extent;
   DeckOptions deck;
   bool quiet = false;
+  bool plane_stress = false;
 };
 
 Wall parse_wall(const std::string& s, const char* option) {
@@ -121,6 +122,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   ro.material.psi_deg = o.psi;
   ro.material.tension = o.tension;
   ro.gravity = o.gravity;
+  ro.plane_stress = o.plane_stress;
 
   MappingOptions mo;
   if (o.ppd < 1 || o.ppd > 10) throw common::InputError("--ppd", "expected 1 to 10 particles per direction");
@@ -272,6 +274,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--row", o.row, "use row N of the displacement file instead (1 first, -1 last)")->excludes(time_opt)->group("Inputs");
   app.add_option("--nodes", o.nodes, "node order of the Node recorders, e.g. '1-35' or '1,2,5-9' (default: all nodes in tag order, as -nodeRange)")->group("Inputs");
   app.add_option("--elements", o.elements, "element order of the Element recorder (default: all elements in tag order, as -eleRange)")->group("Inputs");
+  app.add_flag("--plane-stress", o.plane_stress, "the FEM model is plane stress: with 3 stress components, szz = 0 instead of nu (sxx + syy)")
+      ->group("Inputs");
   app.add_option("--units", o.units, "units of the FEM files: SI (N, m, Pa, kg/m3) or kN (kN, m, kPa, Mg/m3; stresses, moduli and densities x 1000)")
       ->capture_default_str()->group("Inputs");
   // Materials.

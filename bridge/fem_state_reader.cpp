@@ -271,13 +271,16 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     for (std::size_t g = st.gauss_offset[e]; g < st.gauss_offset[e + 1]; ++g) {
       const double* s = &sv[g * static_cast<std::size_t>(comps)];
       Stress6& out6 = st.gauss_stress[g];
-      if (comps == 3) out6 = {s[0], s[1], nu * (s[0] + s[1]), s[2], 0, 0};
+      if (comps == 3) out6 = {s[0], s[1], options.plane_stress ? 0.0 : nu * (s[0] + s[1]), s[2], 0, 0};
       else if (comps == 5) out6 = {s[0], s[1], s[2], s[3], 0, 0};
       else out6 = {s[0], s[1], s[2], s[3], s[4], s[5]};
       for (double& c : out6) c *= factor;
     }
   }
-  if (comps == 3)
+  if (comps == 3 && options.plane_stress)
+    out.notes.push_back(stress.path().string() + ": 3 stress components per Gauss point (sxx syy sxy): szz = 0 "
+                        "(--plane-stress; the MPM side is plane strain)");
+  else if (comps == 3)
     out.notes.push_back(stress.path().string() + ": 3 stress components per Gauss point (sxx syy sxy): szz derived as "
                         "nu (sxx + syy), plane-strain elasticity (exact for elastic states, approximate after yield; "
                         "record `stress3D` for the full tensor)");

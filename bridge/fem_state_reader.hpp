@@ -34,6 +34,9 @@ struct ReadOptions {
   Units units = Units::SI;
   MaterialOverrides material;
   std::optional<double> gravity;            ///< m/s2; default from the body forces, else 9.81
+  /// With 3 stress components per Gauss point: szz = nu (sxx + syy) (plane strain, default) or 0
+  /// (plane-stress FEM models).
+  bool plane_stress = false;
 };
 
 struct AssembledState {

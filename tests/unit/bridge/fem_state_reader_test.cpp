@@ -155,6 +155,10 @@ TEST(FemStateReader, ReadsQuadFourGaussPointStresses) {
   const auto u = disp.values(disp.find_time(0.5));
   EXPECT_CLOSE(a.state.displacement[5].y(), u[11], 0, 0);  // node 6, 12 significant digits
   EXPECT_CLOSE(a.state.elements[0].density, 2400, 0, 1e-15);
+  EXPECT_CLOSE(a.state.gauss_stress[6][2], 0.2 * 1000 * (s[18] + s[19]), 1e-9, 1e-14);  // plane-strain default
+  // The case is PlaneStress: --plane-stress gives szz = 0.
+  o.plane_stress = true;
+  EXPECT_EQ(bridge::read_fem_state(model, o).state.gauss_stress[6][2], 0.0);
 }
 
 }  // namespace
