@@ -107,7 +107,7 @@ void throughput(bool quick) {
 /// The vibrating bar's first mode (see tests/verification/mpm/vibrating_bar_test.cpp): returns the
 /// relative period error of the centre-of-mass velocity.
 double bar_period_error(int cells, int ppd, double& seconds) {
-  const double L = 25.0, E = 100.0, rho = 1.0, v0 = 0.1;
+  const double L = 25.0, E = 100.0, rho = 1.0, v0 = 0.01;  // small: no particle crosses the free end's cell
   const double h = L / cells;
   Deck deck;
   deck.grid = make_grid(0, 0, h, cells + 1, 1, CellType::Linear4);

@@ -566,7 +566,7 @@ void Engine::report(std::size_t c, std::size_t k, int kind, std::int64_t id, dou
 /// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
 /// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
 /// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
-/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into this thread's grid, in the same pass.
+/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass.
 template <class Shape>
 void Engine::g2p(std::size_t c, bool strain_increments, bool remap_momentum) {
   constexpr int W = Shape::kWidth;
