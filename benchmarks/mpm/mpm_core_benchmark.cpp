@@ -1,6 +1,6 @@
 // Throughput and accuracy of the MPM engine (not a test; prints figures).
 //
-//   mpm_core_benchmark [--quick | --throughput | --runout [threads [usl|musl|usf]]]
+//   mpm_core_benchmark [--quick | --throughput | --runout [threads [usl|musl|usf [pic_blend]]]]
 //
 // Figures are wall-clock medians; the CPU-time rate (particle-steps per CPU-second of all threads) is
 // printed next to them because on a shared machine the wall clock also measures the other jobs.
@@ -169,10 +169,12 @@ void accuracy(bool quick) {
 }  // namespace
 
 /// The paper's full 20 s runout at CFL 0.5 on 2 threads: stability, runout and time.
-void runout(int threads, mpm::io::Scheme scheme) {
-  std::printf("== Paper column, full 20 s runout (%s, FLIP, CFL 0.5, %d threads) ==\n",
-              scheme == mpm::io::Scheme::USL ? "USL" : (scheme == mpm::io::Scheme::MUSL ? "MUSL" : "USF"), threads);
+void runout(int threads, mpm::io::Scheme scheme, double pic_blend) {
+  std::printf("== Paper column, full 20 s runout (%s, FLIP with PIC blend %g, CFL 0.5, %d threads) ==\n",
+              scheme == mpm::io::Scheme::USL ? "USL" : (scheme == mpm::io::Scheme::MUSL ? "MUSL" : "USF"), pic_blend,
+              threads);
   Deck deck = paper_column(1.0, 4, scheme);
+  deck.analysis.pic_blend = pic_blend;
   deck.analysis.locate_particles = false;  // the flow reaches the domain's end (x = 150 m): remove them
   mpm::core::Simulation sim(deck, threads);
   const auto t0 = Clock::now();
@@ -200,7 +202,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "--runout") == 0) {
     const std::string scheme = argc > 3 ? argv[3] : "musl";
     runout(argc > 2 ? std::atoi(argv[2]) : 2,
-           scheme == "usl" ? mpm::io::Scheme::USL : (scheme == "usf" ? mpm::io::Scheme::USF : mpm::io::Scheme::MUSL));
+           scheme == "usl" ? mpm::io::Scheme::USL : (scheme == "usf" ? mpm::io::Scheme::USF : mpm::io::Scheme::MUSL),
+           argc > 4 ? std::atof(argv[4]) : 0.0);
     return 0;
   }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
