@@ -178,6 +178,21 @@ TEST(BridgeMapping, RigidBodyVelocityIsExactAndMomentumIsConserved) {
   EXPECT_CLOSE(rep.particles.mass, rep.fem.mass, 0, 1e-13);
 }
 
+// A mesh too small for any patch fit (one one-point element): SPR falls back to the element's value,
+// which is also what IDW gives; the constant field stays exact.
+TEST(BridgeMapping, SingleElementPatchFallsBackToItsValue) {
+  MeshSpec s;
+  s.nx = s.ny = 1;
+  const Stress6 c{-5e4, -7e4, -3e4, 1e3, 0, 0};
+  const auto st = bridge_test::make_state(s, [&](const Vec2&) { return c; });
+  for (Recovery method : {Recovery::InverseDistance, Recovery::PatchRecovery}) {
+    const auto nodal = bridge::recover_nodal_stress(st, method);
+    ASSERT_EQ(nodal.size(), 4u);
+    for (const auto& n : nodal)
+      for (int k = 0; k < 6; ++k) EXPECT_CLOSE(n[k], c[k], 1e-9, 1e-14);
+  }
+}
+
 // Deterministic to the byte, padding included (DESIGN.md: same input -> bit-identical output).
 TEST(BridgeMapping, RecordsAreByteReproducible) {
   MeshSpec s;
