@@ -4,9 +4,9 @@
 // UMFPACK (general) or CHOLMOD (symmetric positive definite) through Eigen's wrappers. Every OpenSees
 // `system` name maps onto one of the two (FORMATS.md section 1); the symbolic analysis is reused and the
 // numeric factorization is skipped when the assembled values did not change (e.g. linear elastic steps).
-// A general system whose values happen to be exactly symmetric is first offered to CHOLMOD's LL^T (about
-// twice as fast as LU); when that fails (not positive definite), UMFPACK factors it. Both are direct
-// solvers, so the solution agrees to round-off whichever is used.
+// A general system whose values are symmetric up to round-off (1e-14 of max|A|) is first offered to
+// CHOLMOD's LL^T (about twice as fast as LU with this machine's reference BLAS); when that fails (not
+// positive definite), UMFPACK factors it. Both are direct solvers: the solutions agree to round-off.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
