@@ -157,3 +157,23 @@ TEST(OpenSeesReferenceRuns, AlgorithmsConvergeToTheSameElastoplasticState) {
 }
 
 }  // namespace
+
+namespace {
+
+// The README's main job (scripts/column_collapse/elastic_column.tcl) runs and reports the base stress of
+// the 50 m x 40 m column within 3 % of -rho g (H - y_c); the free right face makes the column not exactly
+// laterally confined, so the difference is physical (about 1.8 %), not round-off.
+TEST(MainJob, ElasticColumnPrintsBaseStressNearTheAnalyticalValue) {
+  test_support::ScratchDir scratch("fem_main_job");
+  const fs::path script = fs::path(GEOFLOW_SOURCE_DIR) / "scripts/column_collapse/elastic_column.tcl";
+  ASSERT_EQ(test_support::run_fem_tcl(GEOFLOW_BIN_DIR, scratch.path(), "'" + script.string() + "'"), 0)
+      << test_support::read_text(scratch.path() / "stderr.txt");
+  const std::string out = test_support::read_text(scratch.path() / "stdout.txt");
+  const auto at = out.find("error ");
+  ASSERT_NE(at, std::string::npos) << out;
+  const double error_percent = std::strtod(out.c_str() + at + 6, nullptr);
+  EXPECT_LT(std::abs(error_percent), 3.0) << out;
+  EXPECT_NE(out.find("analytical -rho g (H - y) = -745.928 kPa"), std::string::npos) << out;
+}
+
+}  // namespace
