@@ -362,7 +362,6 @@ std::string cmd_update_material_stage(Context& ctx, common::CommandArgs& args) {
     if (e->material_tag() == tag) any = e->update_material_stage(stage) || any;
   }
   if (!any) std::cerr << "WARNING updateMaterialStage: nDMaterial " << tag << " has no stages\n";
-  ctx.domain.update_elements();
   return {};
 }
 
