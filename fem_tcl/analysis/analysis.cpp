@@ -261,6 +261,10 @@ void Analysis::form_unbalance() {
 
 void Analysis::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) { solver_->solve(rhs, x); }
 
+void Analysis::update_elements() {
+  for (domain::Element* e : elements_) e->update();
+}
+
 double Analysis::prescribed_value(const Prescribed& p) const {
   return p.pattern ? p.pattern->factor(domain_.time()) * p.value : 0.0;
 }
@@ -321,7 +325,7 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
       }
       break;
   }
-  domain_.update_elements();
+  update_elements();
 }
 
 void Analysis::impose_prescribed() {
@@ -377,7 +381,7 @@ void Analysis::new_step(double dt) {
       const double t = step_start_time_ + alpha * dt;
       domain_.set_time(t);
       domain_.apply_loads(t);
-      domain_.update_elements();
+      update_elements();
       break;
     }
     case IntegratorType::CentralDifference: {
@@ -412,7 +416,7 @@ void Analysis::new_step(double dt) {
       // equilibrium at t: loads at the start of the step
       domain_.set_time(step_start_time_);
       domain_.apply_loads(step_start_time_);
-      domain_.update_elements();
+      update_elements();
       break;
     }
   }
@@ -430,7 +434,7 @@ void Analysis::commit_step(double dt) {
         nodes_[n]->accel[d] = Udd_[2 * n + d];
       }
     }
-    domain_.update_elements();
+    update_elements();
   }
   if (!ic.is_static()) domain_.set_time(step_start_time_ + dt);
   if (ic.type == IntegratorType::CentralDifference) {

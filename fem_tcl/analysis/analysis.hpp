@@ -66,6 +66,8 @@ class Analysis final : public StepProblem {
   void apply_increment(const Eigen::VectorXd& full);  // full-dof increment through the integrator
   void commit_step(double dt);
   void impose_prescribed();
+  /// Trial strains of every element from the nodes' trial displacements (vector loop, no map walk).
+  void update_elements();
 
   domain::Domain& domain_;
   AnalysisConfig config_;
