@@ -52,7 +52,10 @@ int dispatch(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   } catch (const TclScriptError&) {
     return TCL_ERROR;  // a nested script failed; its message and errorInfo are in place
   } catch (const std::exception& e) {
-    Tcl_SetObjResult(interp, Tcl_NewStringObj(e.what(), -1));
+    // every command error carries the command's usage line
+    std::string message = e.what();
+    if (message.find("usage:") == std::string::npos) message += "; usage: " + std::string(entry.usage);
+    Tcl_SetObjResult(interp, Tcl_NewStringObj(message.c_str(), static_cast<int>(message.size())));
     return TCL_ERROR;
   }
 }

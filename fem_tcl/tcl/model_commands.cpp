@@ -26,6 +26,13 @@ domain::LoadPattern& current_pattern(Context& ctx, common::CommandArgs& args) {
   return *ctx.current_pattern;
 }
 
+/// A number that must be finite (coordinates, masses, loads): "nan" and "inf" parse but are rejected.
+double finite(common::CommandArgs& args, std::string_view what) {
+  const double v = args.number(what);
+  if (!std::isfinite(v)) args.fail("expected a finite " + std::string(what) + ", got " + std::to_string(v));
+  return v;
+}
+
 int fix_flag(common::CommandArgs& args, std::string_view what) {
   const int f = args.integer(what);
   if (f != 0 && f != 1) args.fail("expected " + std::string(what) + " to be 0 or 1, got " + std::to_string(f));
@@ -65,14 +72,14 @@ std::string cmd_model(Context& ctx, common::CommandArgs& args) {
 std::string cmd_node(Context& ctx, common::CommandArgs& args) {
   require_model(ctx, args);
   const int tag = args.integer("tag");
-  const double x = args.number("x");
-  const double y = args.number("y");
+  const double x = finite(args, "x");
+  const double y = finite(args, "y");
   domain::Vector2 mass = domain::Vector2::Zero();
   bool has_mass = false;
   while (!args.empty()) {
     if (args.flag("-mass")) {
-      mass[0] = args.number("m1");
-      mass[1] = args.number("m2");
+      mass[0] = finite(args, "m1");
+      mass[1] = finite(args, "m2");
       has_mass = true;
     } else {
       args.fail("unexpected argument '" + args.peek() + "'");
@@ -143,7 +150,7 @@ std::string cmd_equal_dof(Context& ctx, common::CommandArgs& args) {
 std::string cmd_mass(Context& ctx, common::CommandArgs& args) {
   require_model(ctx, args);
   const int tag = args.integer("nodeTag");
-  const double m1 = args.number("m1"), m2 = args.number("m2");
+  const double m1 = finite(args, "m1"), m2 = finite(args, "m2");
   args.expect_end();
   domain::Node& n = ctx.domain.node(tag, args.command());
   n.mass = domain::Vector2(m1, m2);
@@ -255,7 +262,7 @@ std::string cmd_pattern(Context& ctx, common::CommandArgs& args) {
 std::string cmd_load(Context& ctx, common::CommandArgs& args) {
   domain::LoadPattern& p = current_pattern(ctx, args);
   const int tag = args.integer("nodeTag");
-  const double f1 = args.number("F1"), f2 = args.number("F2");
+  const double f1 = finite(args, "F1"), f2 = finite(args, "F2");
   args.expect_end();
   ctx.domain.node(tag, args.command());
   p.nodal_loads.push_back({tag, f1, f2});
@@ -266,7 +273,7 @@ std::string cmd_sp(Context& ctx, common::CommandArgs& args) {
   domain::LoadPattern& p = current_pattern(ctx, args);
   const int tag = args.integer("nodeTag");
   const int dof = args.integer("dof");
-  const double value = args.number("value");
+  const double value = finite(args, "value");
   args.expect_end();
   if (dof < 1 || dof > 2) args.fail("expected dof 1 or 2, got " + std::to_string(dof));
   const domain::Node& n = ctx.domain.node(tag, args.command());
@@ -305,10 +312,10 @@ std::string cmd_ele_load(Context& ctx, common::CommandArgs& args) {
 
 std::string cmd_rayleigh(Context& ctx, common::CommandArgs& args) {
   domain::RayleighFactors f;
-  f.alpha_m = args.number("alphaM");
-  f.beta_k = args.number("betaK");
-  f.beta_k0 = args.number("betaK0");
-  f.beta_kc = args.number("betaKc");
+  f.alpha_m = finite(args, "alphaM");
+  f.beta_k = finite(args, "betaK");
+  f.beta_k0 = finite(args, "betaK0");
+  f.beta_kc = finite(args, "betaKc");
   args.expect_end();
   ctx.domain.set_rayleigh(f);
   return {};
