@@ -130,6 +130,76 @@ TEST(Simulation, MixedMaterialsMatchSingleMaterialRuns) {
   EXPECT_LT(syy, 0.0);  // the elastic block carries its weight
 }
 
+TEST(Simulation, PicRemovesVelocityModesTheGridCannotSeeFlipKeepsThem) {
+  // 3 x 3 particles in one bilinear cell, x velocities u (1, -2, 1) along each row: zero momentum at
+  // all four nodes (sum N u = 0 for both hat functions), a mode the grid cannot see (the FLIP null
+  // space, e.g. Brackbill & Ruppel 1986). PIC (velocity_update) replaces the particle velocity by the
+  // grid's, zero here; FLIP keeps the mode; a blend b damps it by (1 - b) per step.
+  auto run = [](bool pic, double blend) {
+    Deck deck;
+    deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Linear4);
+    deck.materials.push_back(elastic(0, 1000, 1e3, 0.0));
+    fill_block(deck, 1, 2, 1, 2, 3, 0);  // at 1/6, 1/2, 5/6 of the cell
+    const double u[3] = {0.01, -0.02, 0.01};
+    for (int i = 0; i < 9; ++i) deck.particles[i].velocity_x = u[i % 3];
+    deck.analysis.dt = 1e-3;
+    deck.analysis.velocity_update = pic;
+    deck.analysis.pic_blend = blend;
+    Simulation sim(deck, 1);
+    sim.step();
+    return sim.snapshot();
+  };
+  const auto flip = run(false, 0.0), pic = run(true, 0.0), blend = run(false, 0.25);
+  EXPECT_CLOSE(flip[0].velocity_x, 0.01, 1e-12, 0);
+  EXPECT_CLOSE(pic[0].velocity_x, 0.0, 1e-15, 0);
+  EXPECT_CLOSE(blend[0].velocity_x, 0.75 * 0.01, 1e-12, 0);
+  EXPECT_CLOSE(flip[0].coord_x, pic[0].coord_x, 1e-15, 0);  // positions follow the grid either way
+}
+
+TEST(Simulation, PrescribedNodalVelocityCarriesTheParticles) {
+  // Every node's x velocity fixed to 0.5 m/s: the grid velocity field is uniform, the particles move
+  // with it (x += 0.5 dt per step) and stay stress free; FLIP leaves their own velocity unchanged
+  // (the constrained nodes have zero acceleration), PIC sets it to 0.5.
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 6, 4, CellType::Gimp16);
+  deck.materials.push_back(elastic(0, 1000, 1e5, 0.3));
+  fill_block(deck, 1, 2, 1, 2, 2, 0);
+  deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double) { return true; }), 0, 0.5});
+  deck.analysis.dt = 1e-2;
+  for (bool pic : {false, true}) {
+    deck.analysis.velocity_update = pic;
+    Simulation sim(deck, 1);
+    for (int i = 0; i < 100; ++i) sim.step();
+    for (const auto& p : sim.snapshot()) {
+      EXPECT_CLOSE(p.displacement_x, 0.5, 1e-12, 0);
+      EXPECT_CLOSE(p.velocity_x, pic ? 0.5 : 0.0, 1e-12, 0);
+      EXPECT_CLOSE(p.stress_xx, 0.0, 1e-6, 0);
+    }
+  }
+}
+
+TEST(Simulation, CundallDampingBringsAColumnToRestFaster) {
+  auto kinetic_after = [](double damping) {
+    Deck deck;
+    deck.grid = make_grid(0, 0, 0.5, 2, 12, CellType::Linear4);
+    deck.materials.push_back(elastic(0, 1000, 1e6, 0.0));
+    fill_block(deck, 0, 1, 0, 5, 2, 0);
+    deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; }), 1, 0.0});
+    deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double) { return true; }), 0, 0.0});
+    deck.analysis.gravity = {0, -9.81};
+    deck.analysis.scheme = mpm::io::Scheme::MUSL;
+    deck.analysis.cfl = 0.5;
+    deck.analysis.dt = 1.0;
+    deck.analysis.cundall_damping = damping;
+    Simulation sim(deck, 1);
+    while (sim.time() < 1.0) sim.step();
+    return totals(sim.snapshot()).kinetic;
+  };
+  const double undamped = kinetic_after(0.0), damped = kinetic_after(0.2);
+  EXPECT_GT(undamped, 10.0);  // the undamped column rings (J per m)
+  EXPECT_LT(damped, 0.01 * undamped);
+}
+
 class Resume : public ::testing::TestWithParam<std::tuple<mpm::io::Scheme, CellType, std::string, int>> {};
 
 TEST_P(Resume, ContinuesBitIdentically) {
