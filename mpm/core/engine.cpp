@@ -155,19 +155,15 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   for (std::size_t p = 0; p < n; ++p) {
     const io::ParticleRecord& r = deck.particles[p];
     const Material& mat = materials_[cur_.material[p]];
-    if (r.volume > 0) {
-      cur_.volume[p] = r.volume;
-      cur_.mass[p] = r.mass > 0 ? r.mass : mat.density * r.volume;
-      cur_.nsize_x[p] = r.nsize_x;
-      cur_.nsize_y[p] = r.nsize_y;
-    } else {
-      // CB-Geo defaults: volume = cell area / particles in the cell, mass = density * volume,
-      // nsize = 2 / sqrt(particles in the cell) (2 / particles per direction).
-      const double count = per_cell[static_cast<std::size_t>(cur_.key[p])];
-      cur_.volume[p] = grid_.hx * grid_.hy / count;
-      cur_.mass[p] = mat.density * cur_.volume[p];
-      cur_.nsize_x[p] = cur_.nsize_y[p] = 2.0 / std::sqrt(count);
-    }
+    // CB-Geo defaults: volume = cell area / particles in the cell, mass = density * volume,
+    // nsize = 2 / sqrt(particles in the cell) (2 / particles per direction). Each applies on its own
+    // (a deck may give volumes, e.g. mesh.particles_volumes, but no sizes).
+    const double count = per_cell[static_cast<std::size_t>(cur_.key[p])];
+    cur_.volume[p] = r.volume > 0 ? r.volume : grid_.hx * grid_.hy / count;
+    cur_.mass[p] = r.volume > 0 && r.mass > 0 ? r.mass : mat.density * cur_.volume[p];
+    const bool sized = r.nsize_x > 0 && r.nsize_y > 0;
+    cur_.nsize_x[p] = sized ? r.nsize_x : 2.0 / std::sqrt(count);
+    cur_.nsize_y[p] = sized ? r.nsize_y : 2.0 / std::sqrt(count);
     if (gimp && !(cur_.nsize_x[p] > 0 && cur_.nsize_x[p] <= 2 && cur_.nsize_y[p] > 0 && cur_.nsize_y[p] <= 2))
       throw common::InputError("particle " + std::to_string(r.id), "nsize must be in (0, 2] for ED2Q16G cells");
     cur_.lx[p] = cur_.nsize_x[p] / 4.0;

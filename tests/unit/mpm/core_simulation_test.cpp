@@ -66,6 +66,20 @@ TEST(Simulation, AppliesCbGeoParticleDefaults) {
   EXPECT_EQ(ps[4].nstate_vars, 0u);
 }
 
+TEST(Simulation, GivenVolumeWithoutSizeGetsTheDefaultSize) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 1.0, 4, 4, CellType::Gimp16);
+  deck.materials.push_back(elastic(0, 2000, 1e6, 0.3));
+  fill_block(deck, 0, 1, 0, 1, 2, 0);
+  for (auto& p : deck.particles) p.volume = 0.2;  // e.g. from mesh.particles_volumes; no nsize, no mass
+  deck.analysis.dt = 1e-3;
+  const auto ps = Simulation(deck, 1).snapshot();
+  EXPECT_EQ(ps[0].volume, 0.2);
+  EXPECT_EQ(ps[0].mass, 400.0);
+  EXPECT_EQ(ps[0].nsize_x, 1.0);
+  EXPECT_EQ(ps[0].nsize_y, 1.0);
+}
+
 TEST(Simulation, AutomaticTimeStepFromCfl) {
   Deck deck = collapsing_column(mpm::io::Scheme::USL, CellType::Linear4);
   const double K = 5e6 / (3 * 0.4), G = 5e6 / 2.6, cp = std::sqrt((K + 4 * G / 3) / 1800);
