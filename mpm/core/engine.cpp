@@ -56,9 +56,9 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   if (nx_ < 2 || ny_ < 2 || !(grid_.hx > 0) || !(grid_.hy > 0))
     throw common::InputError("mesh", "the node lattice needs at least 2 x 2 nodes and a positive cell size");
   cells_x_ = nx_ - 1;
+  cells_y_ = ny_ - 1;
   inv_hx_ = 1.0 / grid_.hx;
   inv_hy_ = 1.0 / grid_.hy;
-  cells_y_ = ny_ - 1;
   nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
   gimp_margin_ = gimp ? 1.0 : 0.0;
