@@ -26,15 +26,17 @@ enum class StressSmoothing {
   None,
   /// "cell_volumetric": every particle of a cell gets the cell's volume-weighted mean volumetric strain
   /// increment (its deviatoric increment is kept): the cell-constant dilatation of the B-bar / F-bar
-  /// family (Hughes 1980; in MPM: Coombs, Charlton, Cortis & Augarde 2018, CMAME 333, sec. 3), which
-  /// removes the particle-to-particle pressure oscillation inside a cell.
+  /// family (Hughes 1980, IJNME 15, the B-bar method; in MPM: Coombs, Charlton, Cortis & Augarde 2018,
+  /// "Overcoming volumetric locking in material point methods", CMAME 333), which removes the
+  /// particle-to-particle pressure oscillation inside a cell.
   CellVolumetric,
   /// "nodal_strain": mass-weighted nodal smoothing of the strain increment (all three components):
   /// de_i = sum_p m_p N_ip de_p / m_i at the nodes, then de_p = sum_i N_ip de_i back at the particles
   /// (the projection CB-Geo's pressure_smoothing applies to the pressure, include/particles/particle.tcc
-  /// map_pressure_to_nodes / compute_pressure_smoothing; the strain-smoothing remedy of e.g. Zhang, Chen &
-  /// Liu 2016, The Material Point Method, sec. 3.6). Replaces the cell-wise constant strain of low-order
-  /// MPM by a continuous field, removing the stair-step / checkerboard stress pattern.
+  /// map_pressure_to_nodes / compute_pressure_smoothing, here for the strain increment; cf. the smoothing
+  /// remedies in Zhang, Chen & Liu 2016, The Material Point Method, Academic Press). Replaces the
+  /// cell-wise constant strain of low-order MPM by a continuous field, removing the stair-step /
+  /// checkerboard stress pattern.
   NodalStrain,
 };
 
