@@ -1,9 +1,10 @@
-// Two elastic disks colliding (Sulsky, Chen & Schreyer 1994, CMAME 118, sec. 5.1, Fig. 3-4): disks of
+// Two elastic disks colliding (Sulsky, Chen & Schreyer 1994, CMAME 118; also Sulsky, Zhou & Schreyer
+// 1995, CPC 87): disks of
 // radius 0.2 centred at (0.2, 0.2) and (0.8, 0.8) move towards each other at v = +-(0.1, 0.1);
 // E = 1000, nu = 0.3, rho = 1000; no-slip contact comes from the single-valued grid velocity. Checks:
 // total momentum stays zero; the motion is point-symmetric about (0.5, 0.5); kinetic energy drops
 // while the disks are in contact and is largely recovered as strain energy and rebound; the total
-// energy never grows (FLIP/MUSL, Sulsky et al. Fig. 4).
+// energy never grows (FLIP/MUSL, as in Sulsky et al.'s energy plots).
 #include <gtest/gtest.h>
 
 #include <cmath>

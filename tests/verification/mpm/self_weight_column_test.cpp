@@ -1,7 +1,7 @@
 // Elastic column under self-weight, laterally confined (rollers on both sides, fixed base): at static
-// equilibrium the vertical stress is syy = -rho g (H - y) (e.g. Timoshenko & Goodier 1970, sec. 1-D
-// body-force problems; the standard MPM check of Bardenhagen & Kober 2004, sec. 5, and of the
-// checkerboard studies of Coombs et al. 2018). Gravity is applied at once and the column is brought to
+// equilibrium the vertical stress is syy = -rho g (H - y) (uniaxial strain under body force, e.g.
+// Timoshenko & Goodier 1970; a standard MPM check, e.g. Bardenhagen & Kober 2004, and of the
+// checkerboard studies, e.g. Coombs et al. 2018). Gravity is applied at once and the column is brought to
 // rest by Cundall damping. The RMS error of the particle stresses against the profile, over rho g H,
 // measures the stress oscillation (checkerboarding); the remedy selected by analysis.stress_smoothing
 // must lower it.

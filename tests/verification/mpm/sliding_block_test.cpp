@@ -1,5 +1,5 @@
 // A block sliding on a frictional base under inclined gravity (Coulomb friction; the MPM check of
-// Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, sec. 5, and of CB-Geo's friction constraint): with
+// Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, and of CB-Geo's friction constraint): with
 // gravity g (sin a, -cos a) and friction coefficient mu < tan a the block accelerates uniformly,
 // x(t) = 1/2 g (sin a - mu cos a) t^2; with mu >= tan a it stays at rest. The base nodes carry CB-Geo's
 // friction constraint (dir 1, sign_n -1) and a zero normal velocity.

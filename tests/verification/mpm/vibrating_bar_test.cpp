@@ -1,5 +1,5 @@
-// 1D vibrating bar in its first mode (Sulsky, Zhou & Schreyer 1995, CPC 87, sec. 4.1; Bardenhagen 2002,
-// JCP 180, sec. 4): a bar of length L fixed at x = 0 and free at x = L, E = 100, rho = 1, starting with
+// 1D vibrating bar in its first mode (Sulsky, Zhou & Schreyer 1995, CPC 87; Bardenhagen 2002,
+// JCP 180): a bar of length L fixed at x = 0 and free at x = L, E = 100, rho = 1, starting with
 // v(x, 0) = v0 sin(beta x), beta = pi / (2L). The exact solution v(x, t) = v0 sin(beta x) cos(omega t),
 // omega = beta sqrt(E / rho), gives the centre-of-mass velocity v_cm(t) = (2 v0 / pi) cos(omega t).
 // Modelled as a strip one cell high with nu = 0 and y-velocities fixed (uniaxial strain = uniaxial
