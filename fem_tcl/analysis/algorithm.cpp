@@ -19,7 +19,17 @@ AlgorithmConfig parse_algorithm(common::CommandArgs& args) {
     else if (args.flag("-initialThenCurrent") || args.flag("-factorOnce")) {}  // same converged result
     else if (args.flag("-secant") || args.flag("-current")) {}
     else if (args.flag("-maxDim")) c.krylov_max_dim = args.integer("-maxDim value");
-    else if (args.flag("-iterateTangent") || args.flag("-incrementTangent")) args.word("tangent type");
+    else if (args.flag("-iterate") || args.flag("-increment") || args.flag("-iterateTangent") ||
+             args.flag("-incrementTangent")) {
+      // KrylovNewton: the tangent of the first iteration (-increment) and of the restarts (-iterate); fem_tcl
+      // uses one choice for both: `initial` (the initial stiffness, factored once while dt is unchanged) when
+      // either asks for it, else the current tangent (noTangent is taken as current).
+      const std::string t = args.word("tangent type (current, initial or noTangent)");
+      if (t == "initial" || t == "Initial") c.initial_tangent = true;
+      else if (t != "current" && t != "Current" && t != "noTangent" && t != "NoTangent") {
+        args.fail("unknown tangent type '" + t + "' (current, initial or noTangent)");
+      }
+    }
     else if (args.flag("-tol")) c.line_search_tol = args.number("-tol value");
     else if (args.flag("-maxIter")) c.line_search_max_iter = args.integer("-maxIter value");
     else if (args.flag("-minEta")) c.min_eta = args.number("-minEta value");

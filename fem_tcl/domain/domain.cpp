@@ -1,5 +1,7 @@
 #include "fem_tcl/domain/domain.hpp"
 
+#include <iostream>
+
 #include "common/input_error.hpp"
 
 namespace fem::domain {
@@ -44,6 +46,7 @@ void Domain::clear() {
   nodes_.clear();
   equal_dofs_.clear();
   rayleigh_ = {};
+  warned_ratio_ = warned_inverted_ = false;
   time_ = committed_time_ = 0.0;
   ground_accel_.setZero();
   ++version_;
@@ -95,7 +98,39 @@ void Domain::commit() {
   for (auto& [tag, n] : nodes_) n->commit();
   for (auto& [tag, e] : elements_) e->commit_state();
   committed_time_ = time_;
+  check_mesh_quality();
   record();
+}
+
+MeshQuality Domain::mesh_quality() const {
+  MeshQuality q;
+  bool first = true;
+  for (const auto& [tag, e] : elements_) {
+    const double d = e->min_corner_jacobian();
+    const double r = e->min_corner_jacobian_ratio();
+    if (first || d < q.min_det_j) { q.min_det_j = d; q.min_det_j_element = tag; }
+    if (first || r < q.min_ratio) { q.min_ratio = r; q.min_ratio_element = tag; }
+    first = false;
+  }
+  return q;
+}
+
+void Domain::check_mesh_quality() {
+  if (elements_.empty() || (warned_inverted_ && (warned_ratio_ || mesh_warn_ratio_ <= 0.0))) return;
+  const MeshQuality q = mesh_quality();
+  if (!warned_ratio_ && mesh_warn_ratio_ > 0.0 && q.min_ratio < mesh_warn_ratio_ && q.min_det_j > 0.0) {
+    warned_ratio_ = true;
+    std::cerr << "WARNING mesh quality: at t = " << committed_time_ << " element " << q.min_ratio_element
+              << " has a corner det J of " << q.min_ratio << " times its reference value (below the threshold "
+              << mesh_warn_ratio_ << ", meshQuality -warn); the mesh is distorting\n";
+  }
+  if (!warned_inverted_ && q.min_det_j <= 0.0) {
+    warned_inverted_ = true;
+    warned_ratio_ = true;
+    std::cerr << "WARNING mesh quality: at t = " << committed_time_ << " element " << q.min_det_j_element
+              << " is inverted (corner det J = " << q.min_det_j
+              << " <= 0); results past this time are not meaningful\n";
+  }
 }
 
 void Domain::record() {

@@ -16,6 +16,15 @@ namespace fem::domain {
 /// `equalDOF retained constrained dofs..` (dofs 0-based).
 struct EqualDof { int retained; int constrained; std::vector<int> dofs; };
 
+/// Whole-mesh distortion measures (not in OpenSees): the smallest corner det J (deformed configuration) and
+/// the smallest corner ratio det J / det J(reference), with the elements where they occur (tag 0: no element).
+struct MeshQuality {
+  double min_det_j = 0.0;
+  int min_det_j_element = 0;
+  double min_ratio = 0.0;
+  int min_ratio_element = 0;
+};
+
 class Domain {
  public:
   // --- building (throw common::InputError naming `where` on a duplicate or missing tag) ---
@@ -74,6 +83,13 @@ class Domain {
   void record();
   void flush_recorders();
   void set_rayleigh(const RayleighFactors& f);
+
+  // --- mesh distortion monitor (checked at every commit; one warning each on stderr) ---
+  /// Current (trial) configuration; O(elements), no allocation.
+  MeshQuality mesh_quality() const;
+  /// Ratio det J / det J(reference) below which the first warning is printed (0 disables it).
+  void set_mesh_warning_ratio(double r) { mesh_warn_ratio_ = r; warned_ratio_ = false; }
+  double mesh_warning_ratio() const { return mesh_warn_ratio_; }
   const RayleighFactors& rayleigh() const { return rayleigh_; }
 
  private:
@@ -88,6 +104,10 @@ class Domain {
   double committed_time_ = 0.0;
   Vector2 ground_accel_ = Vector2::Zero();
   long version_ = 0;
+  double mesh_warn_ratio_ = 0.5;
+  bool warned_ratio_ = false;
+  bool warned_inverted_ = false;
+  void check_mesh_quality();
 };
 
 }  // namespace fem::domain

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -97,6 +98,22 @@ class Element {
       const Vector2 e2 = nodes_[(a + 3) % 4]->crd + nodes_[(a + 3) % 4]->disp - xa;
       const double det = 0.25 * (e1[0] * e2[1] - e1[1] * e2[0]);
       m = a == 0 ? det : std::min(m, det);
+    }
+    return m;
+  }
+
+  /// Minimum over the four corners of det J(current) / det J(reference configuration): 1 for a rigid motion,
+  /// <= 0 once a corner is inverted. A degenerate reference corner (det J = 0) gives -infinity.
+  double min_corner_jacobian_ratio() const {
+    double m = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const int b = (a + 1) % 4, c = (a + 3) % 4;
+      const Vector2 r1 = nodes_[b]->crd - nodes_[a]->crd, r2 = nodes_[c]->crd - nodes_[a]->crd;
+      const Vector2 e1 = r1 + nodes_[b]->disp - nodes_[a]->disp, e2 = r2 + nodes_[c]->disp - nodes_[a]->disp;
+      const double ref = r1[0] * r2[1] - r1[1] * r2[0];
+      const double cur = e1[0] * e2[1] - e1[1] * e2[0];
+      const double ratio = ref > 0.0 ? cur / ref : -std::numeric_limits<double>::infinity();
+      m = a == 0 ? ratio : std::min(m, ratio);
     }
     return m;
   }

@@ -71,6 +71,15 @@ void ElementRecorder::collect(std::vector<double>& row) {
   }
 }
 
+void MeshQualityRecorder::collect(std::vector<double>& row) {
+  if (domain_.elements().empty()) return;
+  const domain::MeshQuality q = domain_.mesh_quality();
+  row.push_back(q.min_det_j);
+  row.push_back(q.min_det_j_element);
+  row.push_back(q.min_ratio);
+  row.push_back(q.min_ratio_element);
+}
+
 namespace {
 
 std::vector<int> read_integers(common::CommandArgs& args) {
@@ -82,9 +91,12 @@ std::vector<int> read_integers(common::CommandArgs& args) {
 }  // namespace
 
 std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain) {
-  const std::string type = args.word("type (Node or Element)");
-  if (type != "Node" && type != "Element") args.fail("unknown recorder type '" + type + "' (Node or Element)");
+  const std::string type = args.word("type (Node, Element or MeshQuality)");
+  if (type != "Node" && type != "Element" && type != "MeshQuality") {
+    args.fail("unknown recorder type '" + type + "' (Node, Element or MeshQuality)");
+  }
   const bool is_node = type == "Node";
+  const bool is_mesh = type == "MeshQuality";
   RecorderOptions opt;
   std::vector<int> tags, dofs;
   bool have_dof = false, have_file = false;
@@ -112,13 +124,15 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
         if (d < 1 || d > 2) args.fail("expected -dof values 1 or 2, got " + std::to_string(d));
         dofs.push_back(d - 1);
       }
-    } else if (!is_node && args.flag("-ele")) {
+    } else if (!is_node && !is_mesh && args.flag("-ele")) {
       auto t = read_integers(args);
       if (t.empty()) args.fail("missing element tags after -ele");
       tags.insert(tags.end(), t.begin(), t.end());
-    } else if (!is_node && args.flag("-eleRange")) {
+    } else if (!is_node && !is_mesh && args.flag("-eleRange")) {
       const int a = args.integer("-eleRange start"), b = args.integer("-eleRange end");
       for (const auto& [tag, e] : domain.elements()) if (tag >= a && tag <= b) tags.push_back(tag);
+    } else if (is_mesh) {
+      args.fail("unexpected argument '" + args.peek() + "' (recorder MeshQuality -file f <-time> <-dT dt> <-precision n>)");
     } else if (!args.peek().empty() && args.peek()[0] == '-' && !common::CommandArgs::parse_number(args.peek())) {
       args.fail("unknown option '" + args.peek() + "'");
     } else {
@@ -127,6 +141,7 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     }
   }
   if (!have_file) args.fail("missing -file name (only file output is supported)");
+  if (is_mesh) return std::make_unique<MeshQualityRecorder>(opt, domain);
   if (response.empty()) args.fail("missing response (e.g. disp, reaction, stress)");
   if (is_node) {
     NodeResponse r{};

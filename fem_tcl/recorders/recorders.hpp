@@ -68,7 +68,21 @@ class ElementRecorder final : public TextRecorder {
   std::vector<std::string> response_;
 };
 
-/// `recorder Node|Element ...` (args start at the type word). Throws common::InputError.
+/// `recorder MeshQuality -file f <-time> <-dT dt> <-precision n>` (not in OpenSees): per commit
+/// `[time] minDetJ elementTag minRatio elementTag` over the whole mesh (Domain::mesh_quality).
+class MeshQualityRecorder final : public TextRecorder {
+ public:
+  MeshQualityRecorder(RecorderOptions options, const domain::Domain& domain)
+      : TextRecorder(std::move(options)), domain_(domain) {}
+
+ protected:
+  void collect(std::vector<double>& row) override;
+
+ private:
+  const domain::Domain& domain_;
+};
+
+/// `recorder Node|Element|MeshQuality ...` (args start at the type word). Throws common::InputError.
 std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain);
 
 }  // namespace fem::recorders

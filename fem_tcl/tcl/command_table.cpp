@@ -52,7 +52,9 @@ constexpr std::array kCommands{
     CommandEntry{"testIter", "testIter", 0, cmd_test_iter},
     CommandEntry{"testNorm", "testNorm", 0, cmd_test_norm},
     CommandEntry{"record", "record", 0, cmd_record},
-    CommandEntry{"recorder", "recorder Node|Element -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b -dof d.. | -ele e.. | -eleRange a b) response..", 1, cmd_recorder},
+    CommandEntry{"minJacobian", "minJacobian <-ratio>", 0, cmd_min_jacobian},
+    CommandEntry{"meshQuality", "meshQuality <-warn ratio>", 0, cmd_mesh_quality},
+    CommandEntry{"recorder", "recorder Node|Element|MeshQuality -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b -dof d.. | -ele e.. | -eleRange a b) response..", 1, cmd_recorder},
     CommandEntry{"print", "print -JSON <-file f>", 0, cmd_print},
 };
 }  // namespace

@@ -74,6 +74,8 @@ std::string cmd_test_norm(Context&, common::CommandArgs&);
 std::string cmd_record(Context&, common::CommandArgs&);
 std::string cmd_recorder(Context&, common::CommandArgs&);
 std::string cmd_print(Context&, common::CommandArgs&);
+std::string cmd_min_jacobian(Context&, common::CommandArgs&);
+std::string cmd_mesh_quality(Context&, common::CommandArgs&);
 
 /// OpenSees' query format: every value as "%35.20f", joined with no separator (quirk 9).
 std::string format_values(const double* values, std::size_t n);

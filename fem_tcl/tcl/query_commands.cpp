@@ -125,6 +125,28 @@ std::string cmd_test_norm(Context& ctx, common::CommandArgs& args) {
   return out;
 }
 
+std::string cmd_min_jacobian(Context& ctx, common::CommandArgs& args) {
+  const bool ratio = args.flag("-ratio");
+  args.expect_end();
+  if (ctx.domain.elements().empty()) args.fail("the model has no elements");
+  const domain::MeshQuality q = ctx.domain.mesh_quality();
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", ratio ? q.min_ratio : q.min_det_j);
+  return std::string(buffer) + " " + std::to_string(ratio ? q.min_ratio_element : q.min_det_j_element);
+}
+
+std::string cmd_mesh_quality(Context& ctx, common::CommandArgs& args) {
+  if (args.flag("-warn")) {
+    const double r = args.number("-warn ratio");
+    if (!(r >= 0.0 && r < 1.0)) args.fail("expected 0 <= -warn ratio < 1 (0 disables the threshold warning)");
+    ctx.domain.set_mesh_warning_ratio(r);
+  }
+  args.expect_end();
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", ctx.domain.mesh_warning_ratio());
+  return buffer;
+}
+
 std::string cmd_record(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   ctx.domain.record();

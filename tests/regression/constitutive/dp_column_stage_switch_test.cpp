@@ -8,6 +8,7 @@
 // the time column (the 1e-5 covers the 6-significant-digit rounding of the recorder text);
 // stdout.txt numbers token by token with a relative tolerance of 1e-9 plus an absolute 1e-12.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,8 @@ class DpColumnStageSwitch : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     case_dir_ = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/dp_column_stage_switch";
-    run_dir_ = fs::current_path() / "dp_column_stage_switch_run";
+    // One scratch folder per process: ctest runs each case as its own process, possibly in parallel.
+    run_dir_ = fs::temp_directory_path() / ("geoflow_dp_column_stage_switch_" + std::to_string(::getpid()));
     fs::remove_all(run_dir_);
     fs::create_directories(run_dir_);
     fs::copy_file(case_dir_ / "model.tcl", run_dir_ / "model.tcl");
@@ -58,6 +60,10 @@ class DpColumnStageSwitch : public ::testing::Test {
     const std::string cmd = "cd \"" + run_dir_.string() + "\" && \"" + exe.string() +
                             "\" model.tcl > stdout.txt 2> stderr.txt";
     status_ = std::system(cmd.c_str());
+  }
+  static void TearDownTestSuite() {
+    // Kept for inspection when a case failed; removed otherwise.
+    if (::testing::UnitTest::GetInstance()->failed_test_count() == 0) fs::remove_all(run_dir_);
   }
   static fs::path case_dir_, run_dir_;
   static int status_;

@@ -5,6 +5,7 @@
 // the estimated order p = log(r_{k+1}/r_k) / log(r_k/r_{k-1}) of the last iterates above round-off is about 2.
 // The residual histories (NormDispIncr, printFlag 1) are printed.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -23,7 +24,8 @@ namespace fs = std::filesystem;
 
 TEST(MohrCoulombColumn, StageSwitchAndQuadraticNewtonConvergence) {
   const fs::path script = fs::path(GEOFLOW_SOURCE_DIR) / "tests/verification/constitutive/data/mc_column_stage_switch.tcl";
-  const fs::path run = fs::current_path() / "mc_column_newton_run";
+  // A scratch folder of this process under the system temp folder (removed when the test passes).
+  const fs::path run = fs::temp_directory_path() / ("geoflow_mc_column_newton_" + std::to_string(::getpid()));
   fs::remove_all(run);
   fs::create_directories(run);
   const std::string cmd = "cd \"" + run.string() + "\" && \"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() +
@@ -75,6 +77,7 @@ TEST(MohrCoulombColumn, StageSwitchAndQuadraticNewtonConvergence) {
   // Every step whose history reaches the asymptotic range shows order ~2 (a step that converges in two or three
   // iterations has no triple to estimate from; all 20 do here).
   EXPECT_GE(quadratic_steps, 18);
+  if (!::testing::Test::HasFailure()) fs::remove_all(run);
 }
 
 }  // namespace
