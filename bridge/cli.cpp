@@ -306,6 +306,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--right-wall", o.right_wall, "grid's right boundary (the far end of the runout area): roller, fixed or none")->capture_default_str()->group("MPM deck");
   app.add_option("--base", o.base, "grid's base: friction (y-velocity 0 + Coulomb friction), roller or fixed")->capture_default_str()->group("MPM deck");
   app.add_option("--base-friction", o.deck.base_friction, "base friction coefficient mu (CB-Geo friction_constraints)")->capture_default_str()->group("MPM deck");
+  app.add_option("--base-y", o.deck.base_y, "height of the base, m: the base constraint acts on every node at or below it (default: the grid's bottom edge; with GIMP give the FEM base and an --extent one cell lower)")->group("MPM deck");
   app.add_option("--dt", o.deck.dt, "MPM time step, s (default: --cfl x cell size / P-wave speed)")->group("MPM deck");
   app.add_option("--cfl", o.deck.cfl, "Courant number for the default time step")->capture_default_str()->group("MPM deck");
   app.add_option("--duration", o.deck.duration, "MPM time to run after the transfer, s (nsteps = duration / dt + 1)")->capture_default_str()->group("MPM deck");

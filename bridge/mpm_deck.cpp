@@ -124,6 +124,9 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
   if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
     throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
+  if (options.base_y && !(*options.base_y >= g.y0 && *options.base_y < g.y0 + g.ny * g.h))
+    throw common::InputError("--base-y", "expected a height inside the grid [" + std::to_string(g.y0) + ", " +
+                                             std::to_string(g.y0 + g.ny * g.h) + ")");
   if (options.base == Base::Friction && !(options.base_friction >= 0))
     throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
@@ -164,12 +167,14 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
       mesh += '\n';
     }
 
-  // entity_sets.json: 0 left wall (x <= x0), 1 base (y <= y0), 2 right wall (x >= x0 + nx h), halo included.
+  // entity_sets.json: 0 left wall (x <= x0), 1 base (y <= base_y, default y0), 2 right wall (x >= x0 + nx h),
+  // halo included.
   ordered_json left = ordered_json::array(), base = ordered_json::array(), right = ordered_json::array();
+  const double base_y = options.base_y ? *options.base_y : g.y0;
   for (int j = -hal; j <= g.ny + hal; ++j)
     for (int i = -hal; i <= g.nx + hal; ++i) {
       if (i <= 0) left.push_back(g.node_id(i, j));
-      if (j <= 0) base.push_back(g.node_id(i, j));
+      if (g.y0 + j * g.h <= base_y + 1e-9 * g.h) base.push_back(g.node_id(i, j));
       if (i >= g.nx) right.push_back(g.node_id(i, j));
     }
   ordered_json sets;

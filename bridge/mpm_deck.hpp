@@ -27,6 +27,10 @@ struct DeckOptions {
   Wall left = Wall::Roller, right = Wall::Roller;
   Base base = Base::Friction;
   double base_friction = 0.4;
+  /// m; the base node set (and its constraint) is every node at or below this height. Default: the grid's
+  /// bottom edge. Give the FEM base (e.g. 0) with an extent one cell row lower, so that a GIMP particle
+  /// that dips a hair below the base still lies inside the grid.
+  std::optional<double> base_y;
   std::optional<double> dt;                   ///< s; default cfl * h / c_p
   double cfl = 0.1;
   double duration = 10;                       ///< s of MPM time after the transfer

@@ -94,6 +94,29 @@ TEST(MpmDeck, GimpGridMatchesCbGeoReferenceDeck) {
   for (const auto& [key, value] : deck["mesh"].items()) EXPECT_TRUE(ref_json["mesh"].contains(key)) << key;
 }
 
+// --base-y: the base node set is every node at or below the FEM base, so the grid may extend one cell
+// row below it (a GIMP particle that dips a hair below the base then stays inside the grid).
+TEST(MpmDeck, BaseBelowTheGridEdge) {
+  bridge::DeckOptions o;
+  o.cell_size = 1.0;
+  o.extent = std::array<double, 4>{0, 40, -1, 10};
+  o.base_y = 0.0;
+  const auto d = bridge::build_deck(column_state(), {}, o);
+  EXPECT_CLOSE(d.grid.y0, -1.0, 1e-12, 0);
+  const auto sets = nlohmann::json::parse(d.entity_sets_json);
+  const auto& base = sets["node_sets"][1]["set"];
+  EXPECT_EQ(sets["node_sets"][1]["id"], 1);
+  // lattice rows y = -2 (halo), -1, 0: 3 rows of 40 + 1 + 2 nodes
+  ASSERT_EQ(base.size(), 3u * 43u);
+  for (const auto& id : base) {
+    const long k = id.get<long>();
+    const int j = static_cast<int>(k / d.grid.nodes_x()) - d.grid.halo();
+    EXPECT_LE(d.grid.y0 + j * d.grid.h, 1e-12) << "node " << k;
+  }
+  o.base_y = 20.0;  // above the grid
+  EXPECT_THROW(bridge::build_deck(column_state(), {}, o), common::InputError);
+}
+
 TEST(MpmDeck, DefaultsAndErrors) {
   const auto st = column_state();
   bridge::DeckOptions o;

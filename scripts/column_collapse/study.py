@@ -1,0 +1,760 @@
+#!/usr/bin/python3
+"""The hybrid FEM-MPM granular column collapse study (Sordo, Rathje & Kumar), end to end.
+
+    scripts/column_collapse/study.py [--full] [--out DIR] [--jobs N] [--sweep]
+
+Runs every configuration of the paper's column (50 m x 40 m, a = 0.8; E = 172 MPa, nu = 0.23,
+rho = 1925 kg/m3; Mohr-Coulomb phi = 22.2 deg, psi = 0, c = 0.1 kPa):
+  fem        FEM only (fem_tcl column_collapse.tcl), elastic gravity stage, stage switch, transient to 5 s
+  mpm        MPM only, from the elastic (K0) geostatic state on the MPM grid
+  hyb_<t>    FEM to t = 0, 0.5, 1, 2, 3 s, fem2mpm, then MPM to 20 s TOTAL time (20 - t of MPM time)
+and writes the metrics (DESIGN.md "Metrics"), the figures (PNG) and a Markdown summary table to --out.
+--sweep adds (or, with --sweep-only, runs only) MPM-only columns of aspect ratio a = 0.5 ... 4 against the
+2D runout laws of Lube et al. (2005) and Lajeunesse et al. (2005).
+
+Quick default: 2 m FEM elements and MPM cells, 2 x 2 particles per cell. --full: the paper's resolution,
+1 m elements and cells, 4 x 4 particles per cell. Only /usr/bin/python3 with numpy, matplotlib, h5py.
+"""
+import argparse
+import concurrent.futures
+import csv
+import glob
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+
+# The reference scene (DESIGN.md), SI units for MPM; the FEM script works in kN, m, s, kPa, Mg/m3.
+G = 9.81
+RHO = 1925.0            # kg/m3
+E_MOD = 172.0e6         # Pa
+NU = 0.23
+PHI = 22.2              # deg
+PSI = 0.0               # deg
+COHESION = 100.0        # Pa (0.1 kPa: "minimal cohesion"; keeps the apex of the yield surface finite)
+BASE_MU = round(math.tan(math.radians(PHI)), 3)   # 0.408: base as rough as the soil (see README)
+TRANSFERS = (0.0, 0.5, 1.0, 2.0, 3.0)
+T_TOTAL = 20.0          # s, every MPM run ends at this TOTAL time (FEM time + MPM time)
+FEM_TEND = 5.0
+CFL = 0.5
+SCHEME = "musl"
+PIC_BLEND = 0.0
+
+
+class Scene:
+    """One column geometry and resolution."""
+
+    def __init__(self, width, height, cell, ppd, fem_dt=1e-3, record=0.05, out_every=0.1, t_total=T_TOTAL):
+        self.width, self.height, self.cell, self.ppd = width, height, cell, ppd
+        self.fem_dt, self.record, self.out_every, self.t_total = fem_dt, record, out_every, t_total
+
+    @property
+    def aspect(self):
+        return self.height / self.width
+
+    @property
+    def tau_c(self):
+        return math.sqrt(self.height / G)
+
+    def grid_extent(self):
+        """x from the left wall to beyond the expected runout (Lube's law + margin), one cell row below the base."""
+        a = self.aspect
+        x_max = self.width * (3.0 + 2.5 * max(a, a ** (2.0 / 3.0)))
+        x_max = math.ceil(x_max / self.cell) * self.cell
+        y_top = math.ceil((self.height + 2 * self.cell) / self.cell) * self.cell
+        return 0.0, x_max, -self.cell, y_top
+
+
+def log(msg):
+    print(msg, flush=True)
+
+
+def run_cmd(cmd, cwd=None, logfile=None):
+    """Runs cmd, returns wall seconds; raises with the tail of the log on failure."""
+    t0 = time.perf_counter()
+    with open(logfile, "w") if logfile else open(os.devnull, "w") as f:
+        r = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+    wall = time.perf_counter() - t0
+    if r.returncode != 0:
+        tail = open(logfile).read()[-2000:] if logfile else ""
+        raise RuntimeError("command failed (%d): %s\n%s" % (r.returncode, " ".join(cmd), tail))
+    return wall
+
+
+# ----------------------------------------------------------------------------------------------
+# Runs
+# ----------------------------------------------------------------------------------------------
+
+def run_fem(bins, fem_script, scene, out, tend):
+    d = os.path.join(out, "fem")
+    os.makedirs(d, exist_ok=True)
+    cmd = [bins["fem_tcl"], fem_script, d, "-width", str(scene.width), "-height", str(scene.height),
+           "-cell", str(scene.cell), "-tend", str(tend), "-dt", str(scene.fem_dt), "-record", str(scene.record),
+           "-phi", str(PHI), "-cohesion", str(COHESION / 1000.0)]
+    wall = run_cmd(cmd, logfile=os.path.join(d, "fem_tcl.log"))
+    return {"name": "fem", "kind": "fem", "dir": d, "wall": {"fem": wall}}
+
+
+def tune_deck(deck_path, smoothing="none"):
+    """Study settings the bridge has no option for: automatic dt (CFL), FLIP/PIC blend, stress smoothing."""
+    with open(deck_path) as f:
+        deck = json.load(f)
+    a = deck["analysis"]
+    a["cfl"] = CFL
+    a["pic_blend"] = PIC_BLEND
+    a["stress_smoothing"] = smoothing
+    with open(deck_path, "w") as f:
+        json.dump(deck, f, indent=2)
+
+
+def mpm_nsteps(scene, duration):
+    dt = CFL * scene.cell / p_wave_speed()
+    return int(math.ceil(duration / dt - 1e-9)) + 1, dt
+
+
+def p_wave_speed():
+    return math.sqrt(E_MOD * (1 - NU) / ((1 + NU) * (1 - 2 * NU) * RHO))
+
+
+def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads):
+    name = "hyb_%g" % t_transfer
+    d = os.path.join(out, name)
+    if os.path.isdir(d):
+        shutil.rmtree(d)
+    x0, x1, y0, y1 = scene.grid_extent()
+    duration = scene.t_total - t_transfer
+    nsteps, dt = mpm_nsteps(scene, duration)
+    out_steps = max(1, int(round(scene.out_every / dt)))
+    cmd = [bins["fem2mpm"], "--model", os.path.join(fem_dir, "model.json"), "--disp", os.path.join(fem_dir, "disp.out"),
+           "--vel", os.path.join(fem_dir, "vel.out"), "--stress", os.path.join(fem_dir, "stress.out"),
+           "--time", "%g" % t_transfer, "--units", "kN", "--out", d, "--ppd", str(scene.ppd),
+           "--cell-size", str(scene.cell), "--extent", str(x0), str(x1), str(y0), str(y1), "--base-y", "0",
+           "--right-wall", "none", "--base", "friction", "--base-friction", str(BASE_MU),
+           "--scheme", SCHEME, "--dt", repr(dt), "--nsteps", str(nsteps), "--output-steps", str(out_steps),
+           "--material-type", "mohr-coulomb", "--phi", str(PHI), "--psi", str(PSI), "--cohesion", str(COHESION / 1000.0)]
+    os.makedirs(out, exist_ok=True)
+    w_bridge = run_cmd(cmd, logfile=os.path.join(out, name + "_fem2mpm.log"))
+    shutil.move(os.path.join(out, name + "_fem2mpm.log"), os.path.join(d, "fem2mpm.log"))
+    tune_deck(os.path.join(d, "mpm.json"))
+    w_mpm = run_cmd([bins["mpm"], "-f", d + "/", "-i", "mpm.json", "--threads", str(threads)],
+                    logfile=os.path.join(d, "mpm.log"))
+    return {"name": name, "kind": "hybrid", "dir": d, "t0": t_transfer, "wall": {"fem2mpm": w_bridge, "mpm": w_mpm},
+            "results": os.path.join(d, "results", "column")}
+
+
+def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None):
+    """MPM only: particles on the MPM grid (ppd x ppd per cell, at the centres of equal sub-cells), K0
+    elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v."""
+    os.makedirs(d, exist_ok=True)
+    h, n = scene.cell, scene.ppd
+    nx, ny = int(round(scene.width / h)), int(round(scene.height / h))
+    sub = (np.arange(n) + 0.5) / n * h
+    xs, ys = [], []
+    for j in range(ny):
+        for i in range(nx):
+            for b in range(n):
+                for a in range(n):
+                    xs.append(i * h + sub[a])
+                    ys.append(j * h + sub[b])
+    xs, ys = np.array(xs), np.array(ys)
+    sv = -RHO * G * (scene.height - ys)
+    sh = NU / (1 - NU) * sv
+    with open(os.path.join(d, "particles.txt"), "w") as f:
+        f.write("%d\n" % len(xs))
+        for x, y in zip(xs, ys):
+            f.write("%.10g\t%.10g\n" % (x, y))
+    with open(os.path.join(d, "particles_stresses.txt"), "w") as f:
+        f.write("%d\n" % len(xs))
+        for a, b in zip(sh, sv):
+            f.write("%.10g\t%.10g\t%.10g\t0\t0\t0\n" % (a, b, a))
+    vol = h * h / (n * n)
+    with open(os.path.join(d, "particles_volumes.txt"), "w") as f:
+        for k in range(len(xs)):
+            f.write("%d\t%.10g\n" % (k, vol))
+    x0, x1, y0, y1 = scene.grid_extent()
+    cx, cy = int(round((x1 - x0) / h)), int(round((y1 - y0) / h))
+    # mesh.generator lattice: node id = i + j * nodes_x from the lower-left HALO node (GIMP ring).
+    nodes_x, nodes_y = cx + 3, cy + 3
+    base = [i + j * nodes_x for j in range(nodes_y) for i in range(nodes_x) if y0 + (j - 1) * h <= 1e-9 * h]
+    with open(os.path.join(d, "entity_sets.json"), "w") as f:
+        json.dump({"node_sets": [{"id": 1, "set": base}]}, f)
+    duration = scene.t_total if duration is None else duration
+    nsteps, dt = mpm_nsteps(scene, duration)
+    out_every = scene.out_every if out_every is None else out_every
+    deck = {
+        "title": "MPM-only column collapse from the K0 geostatic state (study.py)",
+        "mesh": {"generator": {"origin": [x0, y0], "cell_size": [h, h], "cells": [cx, cy]},
+                 "cell_type": "ED2Q16G", "entity_sets": "entity_sets.json",
+                 "particles_stresses": "particles_stresses.txt", "particles_volumes": "particles_volumes.txt",
+                 "boundary_conditions": {
+                     "velocity_constraints": [{"nset_id": "left", "dir": 0, "velocity": 0.0},
+                                              {"nset_id": 1, "dir": 1, "velocity": 0.0}],
+                     "friction_constraints": [{"nset_id": 1, "dir": 1, "sign_n": -1, "friction": BASE_MU}]}},
+        "particles": [{"generator": {"type": "file", "location": "particles.txt", "io_type": "Ascii2D",
+                                     "check_duplicates": False, "particle_type": "P2D", "material_id": 0,
+                                     "pset_id": 0}}],
+        "materials": [{"id": 0, "type": "MohrCoulomb2D", "density": RHO, "youngs_modulus": E_MOD,
+                       "poisson_ratio": NU, "friction": PHI, "dilation": PSI, "cohesion": COHESION,
+                       "residual_friction": PHI, "residual_dilation": PSI, "residual_cohesion": COHESION,
+                       "peak_pdstrain": 0.0, "residual_pdstrain": 0.0,
+                       "tension_cutoff": COHESION / math.tan(math.radians(PHI)), "softening": False}],
+        "external_loading_conditions": {"gravity": [0.0, -G]},
+        "analysis": {"type": "MPMExplicit2D", "mpm_scheme": SCHEME, "velocity_update": False, "locate_particles": True,
+                     "dt": dt, "cfl": CFL, "pic_blend": PIC_BLEND, "stress_smoothing": smoothing,
+                     "nsteps": nsteps, "uuid": "column",
+                     "damping": {"type": "Cundall", "damping_factor": 0.0}},
+        "post_processing": {"path": "results/", "output_steps": max(1, int(round(out_every / dt)))},
+    }
+    with open(os.path.join(d, "mpm.json"), "w") as f:
+        json.dump(deck, f, indent=2)
+
+
+def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None):
+    d = os.path.join(out, name)
+    if os.path.isdir(d):
+        shutil.rmtree(d)
+    write_mpm_only_deck(scene, d, smoothing, duration, out_every)
+    w = run_cmd([bins["mpm"], "-f", d + "/", "-i", "mpm.json", "--threads", str(threads)], logfile=os.path.join(d, "mpm.log"))
+    return {"name": name, "kind": "mpm", "dir": d, "t0": 0.0, "wall": {"mpm": w},
+            "results": os.path.join(d, "results", "column"), "aspect": scene.aspect,
+            "width": scene.width, "height": scene.height}
+
+
+# ----------------------------------------------------------------------------------------------
+# Metrics
+# ----------------------------------------------------------------------------------------------
+
+def read_series(results_dir):
+    with open(os.path.join(results_dir, "series.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def read_particles(path):
+    import h5py
+    with h5py.File(path, "r") as f:
+        t = f["table"][...]
+    return {k: np.asarray(t[k], dtype=float) for k in ("coord_x", "coord_y", "velocity_x", "velocity_y", "mass", "tau_xy")}
+
+
+def state_metrics(x, y, vx, vy, m):
+    return {"L": np.percentile(x, 98), "H": np.percentile(y, 99.5), "PE": float(np.sum(m * G * y)),
+            "KEx": float(np.sum(0.5 * m * vx ** 2)), "KEy": float(np.sum(0.5 * m * vy ** 2))}
+
+
+def particle_steps(results_dir):
+    """{step: path} of the particle files of a run."""
+    files = {}
+    for p in glob.glob(os.path.join(results_dir, "particles*.h5")):
+        s = os.path.basename(p)[len("particles"):-3]
+        if s.isdigit():
+            files[int(s)] = p
+    return files
+
+
+def mpm_run_series(run, fem=None):
+    """Time series of a MPM run on TOTAL time: the transfer (or initial) state, then series.csv."""
+    res = run["results"]
+    steps = particle_steps(res)
+    first = steps[min(steps)]   # hybrids: the fem2mpm file (step 0); MPM only: the first output
+    s = read_series(res)
+    t = s["time"] + run["t0"]
+    cols = {"t": t, "L": s["runout_x_p98"], "H": s["height_y_p995"], "PE": s["potential_energy"],
+            "KEx": s["kinetic_energy_x"], "KEy": s["kinetic_energy_y"]}
+    if run["kind"] == "hybrid":
+        p = read_particles(first)
+        m0 = state_metrics(p["coord_x"], p["coord_y"], p["velocity_x"], p["velocity_y"], p["mass"])
+        for k in ("L", "H", "PE", "KEx", "KEy"):
+            cols[k] = np.concatenate([[m0[k]], cols[k]])
+        cols["t"] = np.concatenate([[run["t0"]], cols["t"]])
+    return cols
+
+
+def load_fem_model(fem_dir):
+    with open(os.path.join(fem_dir, "model.json")) as f:
+        model = json.load(f)
+    geo = model["StructuralAnalysisModel"]["geometry"]
+    nodes = {n["name"]: n["crd"] for n in geo["nodes"]}
+    tags = sorted(nodes)
+    xy = np.array([nodes[t][:2] for t in tags], dtype=float)
+    index = {t: k for k, t in enumerate(tags)}
+    elems = np.array([[index[n] for n in e["nodes"]] for e in geo["elements"]], dtype=int)
+    return xy, elems
+
+
+def fem_last_time(fem_dir):
+    """Time of the last complete row of the FEM displacement recorder."""
+    last = 0.0
+    with open(os.path.join(fem_dir, "disp.out")) as f:
+        for line in f:
+            if line.strip():
+                last = float(line.split(None, 1)[0])
+    return last
+
+
+def read_recorder(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.strip():
+                rows.append(np.array(line.split(), dtype=float))
+    n = min(len(r) for r in rows)
+    return np.array([r[:n] for r in rows])
+
+
+def fem_series(fem_dir, cell):
+    xy, elems = load_fem_model(fem_dir)
+    # lumped nodal masses: element area x rho / 4 to each corner (reference configuration)
+    p = xy[elems]
+    area = 0.5 * np.abs((p[:, 0, 0] * p[:, 1, 1] - p[:, 1, 0] * p[:, 0, 1]) + (p[:, 1, 0] * p[:, 2, 1] - p[:, 2, 0] * p[:, 1, 1])
+                        + (p[:, 2, 0] * p[:, 3, 1] - p[:, 3, 0] * p[:, 2, 1]) + (p[:, 3, 0] * p[:, 0, 1] - p[:, 0, 0] * p[:, 3, 1]))
+    m = np.zeros(len(xy))
+    np.add.at(m, elems.ravel(), np.repeat(area * RHO / 4.0, 4))
+    disp = read_recorder(os.path.join(fem_dir, "disp.out"))
+    vel = read_recorder(os.path.join(fem_dir, "vel.out"))
+    # after `loadConst -time 0` the t = 0 row may appear twice: keep the last of equal times
+    keep = np.r_[np.diff(disp[:, 0]) > 1e-12, True]
+    disp = disp[keep]
+    keepv = np.r_[np.diff(vel[:, 0]) > 1e-12, True]
+    vel = vel[keepv]
+    n = min(len(disp), len(vel))
+    out = {k: [] for k in ("t", "L", "H", "PE", "KEx", "KEy")}
+    for r in range(n):
+        u = disp[r, 1:].reshape(-1, 2)
+        v = vel[r, 1:].reshape(-1, 2)
+        x = xy[:, 0] + u[:, 0]
+        y = xy[:, 1] + u[:, 1]
+        s = state_metrics(x, y, v[:, 0], v[:, 1], m)
+        out["t"].append(disp[r, 0])
+        for k in s:
+            out[k].append(s[k])
+    out = {k: np.array(v) for k, v in out.items()}
+    out["minJ_t"], out["minJ"] = fem_min_jacobian(fem_dir)
+    out["minJ0"] = cell * cell / 4.0   # corner det J of an undistorted square element
+    return out, xy, disp
+
+
+def fem_min_jacobian(fem_dir):
+    """The mesh-quality series: the first file whose name says Jacobian/quality; rows `time minDetJ [element]`."""
+    cands = [p for p in sorted(glob.glob(os.path.join(fem_dir, "*")))
+             if any(k in os.path.basename(p).lower() for k in ("jac", "quality", "meshq"))
+             and not p.endswith((".log", ".json"))]
+    for p in cands:
+        try:
+            a = read_recorder(p)
+        except (ValueError, OSError):
+            continue
+        if a.ndim == 2 and a.shape[1] >= 2:
+            return a[:, 0], a[:, 1]
+    return np.array([]), np.array([])
+
+
+def fem_outline(xy, u, width, height, cell):
+    """Top surface then right face of the deformed FEM mesh (x, y arrays)."""
+    nx, ny = int(round(width / cell)), int(round(height / cell))
+    cur = xy + u
+    top = [ny * (nx + 1) + i for i in range(nx + 1)]
+    right = [j * (nx + 1) + nx for j in range(ny, -1, -1)]
+    idx = top + right[1:]
+    return cur[idx, 0], cur[idx, 1]
+
+
+def particle_profile(x, y, cell):
+    """Free-surface profile of a particle cloud: the highest particle per column of width cell/2."""
+    b = cell
+    k = np.floor(x / b).astype(int)
+    xs, ys = [], []
+    for kk in range(k.min(), k.max() + 1):
+        sel = k == kk
+        if np.any(sel):
+            xs.append((kk + 0.5) * b)
+            ys.append(y[sel].max())
+    return np.array(xs), np.array(ys)
+
+
+def particles_at(run, t_total):
+    """Particle file of a run closest to TOTAL time t (None if the run does not cover t)."""
+    res = run["results"]
+    s = read_series(res)
+    tt = s["time"] + run["t0"]
+    if run["kind"] == "hybrid" and abs(t_total - run["t0"]) < 1e-9:
+        return read_particles(particle_steps(res)[0])
+    if len(tt) == 0 or t_total < run["t0"] or t_total > tt[-1] + 1e-9:
+        return None
+    k = int(np.argmin(np.abs(tt - t_total)))
+    f = particle_steps(res).get(int(s["step"][k]))
+    return read_particles(f) if f else None
+
+
+def prune_particle_files(run, keep_times):
+    """Deletes the particle files not needed for the figures (a full run writes ~13 MB per output)."""
+    res = run["results"]
+    s = read_series(res)
+    tt = s["time"] + run["t0"]
+    keep = {int(s["step"][int(np.argmin(np.abs(tt - t)))]) for t in keep_times if len(tt)}
+    steps = particle_steps(res)
+    keep.add(min(steps))
+    keep.add(max(steps))
+    for st, p in steps.items():
+        if st not in keep:
+            os.remove(p)
+
+
+# ----------------------------------------------------------------------------------------------
+# Figures and table
+# ----------------------------------------------------------------------------------------------
+
+def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    plt.rcParams.update({"font.size": 9, "savefig.dpi": 110})
+    tau, L0, H0 = scene.tau_c, scene.width, scene.height
+    colors = {"fem": "k", "mpm": "tab:blue"}
+    cyc = ["tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]
+    for k, t in enumerate(TRANSFERS):
+        colors["hyb_%g" % t] = cyc[k % len(cyc)]
+    labels = {"fem": "FEM only", "mpm": "MPM only"}
+    for t in TRANSFERS:
+        labels["hyb_%g" % t] = "hybrid, transfer at %g s" % t
+    paths = []
+
+    def save(fig, name):
+        p = os.path.join(out, name)
+        fig.savefig(p, bbox_inches="tight")
+        plt.close(fig)
+        paths.append(p)
+
+    # 1. surface profiles: FEM and the 1 s hybrid at t = 1, 3, 5 s
+    fig, axs = plt.subplots(3, 1, figsize=(7, 6.5), sharex=True)
+    for ax, t in zip(axs, (1.0, 3.0, 5.0)):
+        ax.plot([0, L0, L0], [H0, H0, 0], ":", color="0.6", lw=1, label="initial column")
+        if t in fem_prof:
+            ax.plot(*fem_prof[t], "k-", lw=1.5, label="FEM only (deformed mesh outline)")
+        else:
+            ax.text(0.6, 0.8, "FEM did not reach t = %g s" % t, transform=ax.transAxes)
+        if hybrid_run is not None:
+            p = particles_at(hybrid_run, t)
+            if p is not None:
+                ax.plot(*particle_profile(p["coord_x"], p["coord_y"], scene.cell), "-", color="tab:green", lw=1.5,
+                        label="hybrid (transfer at 1 s), particle surface")
+        ax.set_ylabel("y (m)")
+        ax.set_title("t = %g s (t/tau_c = %.2f)" % (t, t / tau), fontsize=9)
+        ax.set_aspect("equal")
+        ax.set_ylim(0, H0 * 1.1)
+        ax.set_xlim(0, L0 * 3.2)
+    axs[0].legend(loc="upper right", fontsize=7)
+    axs[-1].set_xlabel("x (m)")
+    save(fig, "profiles.png")
+
+    # 2. runout and height
+    fig, axs = plt.subplots(1, 2, figsize=(9, 3.4))
+    for name, s in series.items():
+        axs[0].plot(s["t"] / tau, (s["L"] - L0) / L0, color=colors.get(name), label=labels.get(name, name), lw=1.2)
+        axs[1].plot(s["t"] / tau, s["H"] / H0, color=colors.get(name), lw=1.2)
+    axs[0].axhline(1.53, ls="--", color="0.4", lw=0.8)
+    axs[0].text(0.2, 1.56, "empirical 1.53 (a = 0.8)", fontsize=7, color="0.3")
+    axs[0].axhline(1.6, ls=":", color="0.4", lw=0.8)
+    axs[0].set_ylabel("normalized runout (L - L0)/L0")
+    axs[1].set_ylabel("normalized height H/H0")
+    for ax in axs:
+        ax.set_xlabel("t / tau_c")
+        ax.grid(alpha=0.3)
+    axs[0].legend(fontsize=7)
+    save(fig, "runout_height.png")
+
+    # 3. energies
+    for key, title, fname in (("PE", "potential energy PE/PE0", "energy_pe.png"),
+                              ("KEx", "horizontal kinetic energy KEx/PE0", "energy_kex.png"),
+                              ("KEy", "vertical kinetic energy KEy/PE0", "energy_key.png")):
+        fig, ax = plt.subplots(figsize=(5.5, 3.4))
+        for name, s in series.items():
+            ax.plot(s["t"] / tau, s[key] / s["PE0"], color=colors.get(name), label=labels.get(name, name), lw=1.2)
+        if key == "PE":
+            ax.axhline(0.6, ls="--", color="0.4", lw=0.8)
+        ax.set_xlabel("t / tau_c")
+        ax.set_ylabel(title)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+        save(fig, fname)
+
+    # 4. FEM minimum Jacobian
+    fem = series.get("fem")
+    if fem is not None and len(fem["minJ"]):
+        fig, ax = plt.subplots(figsize=(5.5, 3.4))
+        ax.plot(fem["minJ_t"] / tau, fem["minJ"] / fem["minJ0"], "k-")
+        ax.axhline(0, color="tab:red", lw=0.8)
+        ax.axvline(1.75, ls="--", color="0.5", lw=0.8)
+        ax.text(1.78, 0.9, "paper: mesh unusable\npast t/tau_c ~ 1.75", fontsize=7)
+        ax.set_xlabel("t / tau_c")
+        ax.set_ylabel("min det J / det J of the undistorted element")
+        ax.set_title("FEM only: mesh quality", fontsize=9)
+        ax.grid(alpha=0.3)
+        save(fig, "fem_min_jacobian.png")
+
+    # 5. shear-stress snapshot with and without the checkerboard remedy
+    if snap_runs:
+        fig, axs = plt.subplots(1, len(snap_runs), figsize=(4.2 * len(snap_runs), 3.3), sharey=True)
+        for ax, (title, run, t) in zip(np.atleast_1d(axs), snap_runs):
+            p = particles_at(run, t)
+            if p is None:
+                continue
+            sel = p["coord_x"] < L0 * 1.6
+            sc = ax.scatter(p["coord_x"][sel], p["coord_y"][sel], c=p["tau_xy"][sel] / 1e3, s=1.5, cmap="RdBu_r",
+                            vmin=-120, vmax=120, linewidths=0)
+            ax.set_title("%s, t = %g s" % (title, t), fontsize=8)
+            ax.set_aspect("equal")
+            ax.set_xlabel("x (m)")
+        np.atleast_1d(axs)[0].set_ylabel("y (m)")
+        fig.colorbar(sc, ax=axs, label="tau_xy (kPa)", shrink=0.8)
+        save(fig, "shear_stress_checkerboard.png")
+    return paths
+
+
+def summary_rows(series, walls, scene):
+    tau, L0, H0 = scene.tau_c, scene.width, scene.height
+    rows = []
+    for name, s in series.items():
+        rows.append({"run": name, "t_end": s["t"][-1], "runout": (s["L"][-1] - L0) / L0, "height": s["H"][-1] / H0,
+                     "pe": s["PE"][-1] / s["PE0"], "t_kex": s["t"][int(np.argmax(s["KEx"]))] / tau,
+                     "t_key": s["t"][int(np.argmax(s["KEy"]))] / tau, "wall": walls.get(name, {})})
+    return rows
+
+
+def summary_markdown(rows, scene, mode):
+    lines = ["| run | end t (s) | runout (L-L0)/L0 | H/H0 | PE/PE0 | t/tau_c at peak KEx | t/tau_c at peak KEy | wall time (s) |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        w = r["wall"]
+        wt = ", ".join("%s %.1f" % (k, v) for k, v in w.items())
+        lines.append("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |" % (r["run"], r["t_end"], r["runout"], r["height"],
+                                                                               r["pe"], r["t_kex"], r["t_key"], wt))
+    lines.append("| paper (MPM, hybrids) | 20 | ~1.6 (empirical 1.53, Soundararajan 2015) | | ~0.6 | ~1.75 | ~1 | |")
+    return "\n".join(lines) + "\n"
+
+
+# ----------------------------------------------------------------------------------------------
+# Aspect-ratio sweep
+# ----------------------------------------------------------------------------------------------
+
+SWEEP_A = (0.5, 1.0, 2.0, 3.0, 4.0)
+
+
+def sweep_scene(a, cell, ppd, area=2000.0):
+    w = max(2, round(math.sqrt(area / a) / cell)) * cell
+    h = max(2, round(a * w / cell)) * cell
+    return Scene(w, h, cell, ppd, out_every=0.25)
+
+
+def lube(a):
+    a = np.asarray(a, dtype=float)
+    return np.where(a < 1.8, 1.2 * a, 1.9 * a ** (2.0 / 3.0))
+
+
+def lajeunesse(a):
+    a = np.asarray(a, dtype=float)
+    return np.where(a < 3.0, 1.2 * a, 1.9 * a ** (2.0 / 3.0))
+
+
+def sweep_plot(out, results):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(5.5, 3.8))
+    a = np.linspace(0.3, 4.5, 200)
+    ax.plot(a, lube(a), "k-", lw=1, label="Lube et al. 2005: 1.2 a (a < 1.8), 1.9 a^(2/3)")
+    ax.plot(a, lajeunesse(a), "k--", lw=1, label="Lajeunesse et al. 2005 (2D channel): 1.2 a (a < 3), 1.9 a^(2/3)")
+    ax.plot([0.8], [1.53], "s", color="0.4", label="empirical 1.53 at a = 0.8 (Soundararajan 2015)")
+    ax.plot([r["aspect"] for r in results], [r["runout"] for r in results], "o", color="tab:blue", label="MPM only (this study)")
+    ax.set_xlabel("aspect ratio a = H0/L0")
+    ax.set_ylabel("final normalized runout (L - L0)/L0")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=6.5)
+    p = os.path.join(out, "aspect_sweep.png")
+    fig.savefig(p, bbox_inches="tight", dpi=110)
+    plt.close(fig)
+    return p
+
+
+def run_sweep(bins, out, cell, ppd, jobs):
+    results = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
+        futs = {}
+        for a in SWEEP_A:
+            sc = sweep_scene(a, cell, ppd)
+            futs[ex.submit(run_mpm_only, bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a)] = sc
+        for f in concurrent.futures.as_completed(futs):
+            sc = futs[f]
+            run = f.result()
+            s = mpm_run_series(run)
+            run_r = {"a_nominal": run["name"], "aspect": sc.aspect, "width": sc.width, "height": sc.height,
+                     "runout": (s["L"][-1] - sc.width) / sc.width, "height_ratio": s["H"][-1] / sc.height,
+                     "t_end": s["t"][-1], "wall": run["wall"]["mpm"],
+                     "lube": float(lube(sc.aspect)), "lajeunesse": float(lajeunesse(sc.aspect))}
+            prune_particle_files(run, [])
+            log("sweep a = %.2f (%g x %g m): runout %.2f (Lube %.2f), %.1f s" % (sc.aspect, sc.width, sc.height,
+                                                                              run_r["runout"], run_r["lube"], run_r["wall"]))
+            results.append(run_r)
+    results.sort(key=lambda r: r["aspect"])
+    with open(os.path.join(out, "sweep.json"), "w") as f:
+        json.dump(results, f, indent=1)
+    lines = ["| a = H0/L0 | column (m) | MPM runout (L-L0)/L0 | Lube et al. 2005 | Lajeunesse et al. 2005 | H/H0 | wall (s) |",
+             "|---|---|---|---|---|---|---|"]
+    for r in results:
+        lines.append("| %.2f | %g x %g | %.2f | %.2f | %.2f | %.2f | %.1f |" % (r["aspect"], r["width"], r["height"], r["runout"],
+                                                                             r["lube"], r["lajeunesse"], r["height_ratio"], r["wall"]))
+    with open(os.path.join(out, "sweep.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    sweep_plot(out, results)
+    return results
+
+
+# ----------------------------------------------------------------------------------------------
+# Driver
+# ----------------------------------------------------------------------------------------------
+
+def find_bins(bin_dir):
+    cands = [bin_dir] if bin_dir else [os.path.join(REPO, "build", "bin")]
+    for d in cands:
+        bins = {k: os.path.join(d, k) for k in ("fem_tcl", "fem2mpm", "mpm")}
+        if all(os.access(p, os.X_OK) for p in bins.values()):
+            return bins
+    sys.exit("study.py: error: fem_tcl, fem2mpm and mpm not found in %s (build first: bash scripts/build.sh, or --bin DIR)" % cands[0])
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--full", action="store_true", help="the paper's resolution: 1 m elements and cells, 4 x 4 particles per cell")
+    ap.add_argument("--out", default=None, help="output folder (default study_quick/ or study_full/ in the current folder)")
+    ap.add_argument("--jobs", type=int, default=2, help="runs at a time (each MPM run uses one thread)")
+    ap.add_argument("--sweep", action="store_true", help="also run the aspect-ratio sweep (MPM only)")
+    ap.add_argument("--sweep-only", action="store_true", help="run only the aspect-ratio sweep")
+    ap.add_argument("--bin", default=None, help="folder with fem_tcl, fem2mpm, mpm (default build/bin)")
+    ap.add_argument("--fem-script", default=os.path.join(HERE, "column_collapse.tcl"), help="the FEM collapse script")
+    ap.add_argument("--width", type=float, default=50.0, help="column width L0, m")
+    ap.add_argument("--height", type=float, default=40.0, help="column height H0, m")
+    ap.add_argument("--cell", type=float, default=None, help="FEM element and MPM cell size, m (quick 2, full 1)")
+    ap.add_argument("--ppd", type=int, default=None, help="particles per cell and direction (quick 2, full 4)")
+    ap.add_argument("--t-total", type=float, default=T_TOTAL, help="end of every MPM run, total time, s")
+    ap.add_argument("--fem-tend", type=float, default=FEM_TEND, help="end of the FEM-only run, s")
+    ap.add_argument("--fem-dt", type=float, default=1e-3, help="FEM time step, s")
+    ap.add_argument("--transfers", default=",".join("%g" % t for t in TRANSFERS), help="transfer times, s (comma list)")
+    ap.add_argument("--fem-from", default=None, help="reuse the FEM output in this folder (no FEM run)")
+    ap.add_argument("--no-figures", action="store_true", help="metrics and table only")
+    ap.add_argument("--no-checkerboard", action="store_true", help="skip the extra run with stress smoothing")
+    args = ap.parse_args(argv)
+
+    cell = args.cell or (1.0 if args.full else 2.0)
+    ppd = args.ppd or (4 if args.full else 2)
+    out = os.path.abspath(args.out or ("study_full" if args.full else "study_quick"))
+    os.makedirs(out, exist_ok=True)
+    bins = find_bins(args.bin)
+    t_start = time.perf_counter()
+    mode = "full" if args.full else "quick"
+
+    if args.sweep_only:
+        run_sweep(bins, out, cell, ppd, args.jobs)
+        log("sweep done in %.1f s" % (time.perf_counter() - t_start))
+        return 0
+
+    scene = Scene(args.width, args.height, cell, ppd, fem_dt=args.fem_dt, t_total=args.t_total)
+    transfers = [float(t) for t in args.transfers.split(",") if t.strip()]
+    fem_tend = max([args.fem_tend] + transfers)
+    log("study (%s): column %g x %g m, cell %g m, %d x %d particles per cell, tau_c = %.2f s, base friction %.3f, out %s"
+        % (mode, scene.width, scene.height, cell, ppd, ppd, scene.tau_c, BASE_MU, out))
+    runs = {}
+    snap_t = 1.0
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
+        if args.fem_from:
+            f_fem = concurrent.futures.Future()
+            f_fem.set_result({"name": "fem", "kind": "fem", "dir": os.path.abspath(args.fem_from), "wall": {}})
+        else:
+            f_fem = ex.submit(run_fem, bins, args.fem_script, scene, out, fem_tend)
+        f_mpm = ex.submit(run_mpm_only, bins, scene, out, 1)
+        f_smooth = None
+        if not args.no_checkerboard:
+            f_smooth = ex.submit(run_mpm_only, bins, scene, out, 1, "mpm_smoothed", "nodal_strain", snap_t + 0.5, 0.5)
+        runs["fem"] = f_fem.result()
+        log("fem done: %.1f s" % runs["fem"]["wall"].get("fem", float("nan")))
+        t_fem = fem_last_time(runs["fem"]["dir"])
+        skipped = [t for t in transfers if t > t_fem + 1e-9]
+        for t in skipped:
+            log("hybrid %g s skipped: the FEM run ended at t = %g s (mesh inverted or not converged)" % (t, t_fem))
+        transfers = [t for t in transfers if t not in skipped]
+        f_h = {t: ex.submit(run_hybrid, bins, scene, out, runs["fem"]["dir"], t, 1) for t in transfers}
+        runs["mpm"] = f_mpm.result()
+        log("mpm only done: %.1f s" % runs["mpm"]["wall"]["mpm"])
+        for t, f in f_h.items():
+            runs["hyb_%g" % t] = f.result()
+            log("hybrid %g s done: fem2mpm %.1f s, mpm %.1f s" % (t, runs["hyb_%g" % t]["wall"]["fem2mpm"],
+                                                                runs["hyb_%g" % t]["wall"]["mpm"]))
+        smooth = f_smooth.result() if f_smooth else None
+    t_runs = time.perf_counter() - t_start
+
+    # metrics
+    series = {}
+    fem_s, fem_xy, fem_disp = fem_series(runs["fem"]["dir"], cell)
+    pe0_fem = fem_s["PE"][0]
+    fem_s["PE0"] = pe0_fem
+    series["fem"] = fem_s
+    s = mpm_run_series(runs["mpm"])
+    s["PE0"] = s["PE"][0] if runs["mpm"]["t0"] > 0 else RHO * G * scene.width * scene.height ** 2 / 2.0
+    series["mpm"] = s
+    for t in transfers:
+        s = mpm_run_series(runs["hyb_%g" % t])
+        s["PE0"] = pe0_fem
+        series["hyb_%g" % t] = s
+    # FEM profiles at t = 1, 3, 5 s
+    fem_prof = {}
+    for t in (1.0, 3.0, 5.0):
+        k = np.where(np.abs(fem_disp[:, 0] - t) < 1e-6)[0]
+        if len(k):
+            fem_prof[t] = fem_outline(fem_xy, fem_disp[k[-1], 1:].reshape(-1, 2), scene.width, scene.height, cell)
+    # metrics file (CSV per run)
+    for name, s in series.items():
+        with open(os.path.join(out, "metrics_%s.csv" % name), "w") as f:
+            f.write("t,t_over_tau_c,runout_norm,height_norm,pe_ratio,kex_ratio,key_ratio\n")
+            for k in range(len(s["t"])):
+                f.write("%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n" % (s["t"][k], s["t"][k] / scene.tau_c,
+                        (s["L"][k] - scene.width) / scene.width, s["H"][k] / scene.height, s["PE"][k] / s["PE0"],
+                        s["KEx"][k] / s["PE0"], s["KEy"][k] / s["PE0"]))
+    walls = {name: r["wall"] for name, r in runs.items()}
+    rows = summary_rows(series, walls, scene)
+    table = summary_markdown(rows, scene, mode)
+    snaps = [("MPM only, no smoothing", runs["mpm"], snap_t)]
+    if smooth:
+        snaps.append(("MPM only, nodal_strain smoothing", smooth, snap_t))
+    if not args.no_figures:
+        hyb1 = runs.get("hyb_1")
+        figures(out, scene, series, fem_prof, hyb1, snaps)
+    for name, r in runs.items():
+        if "results" in r:
+            prune_particle_files(r, (1.0, 3.0, 5.0, snap_t))
+    if smooth:
+        prune_particle_files(smooth, (snap_t,))
+    t_all = time.perf_counter() - t_start
+    with open(os.path.join(out, "summary.md"), "w") as f:
+        f.write("Study (%s): %g x %g m column, %g m cells, %d x %d particles per cell; runs %.1f s, total %.1f s "
+                "wall with %d jobs.\n\n" % (mode, scene.width, scene.height, cell, ppd, ppd, t_runs, t_all, args.jobs))
+        f.write(table)
+    with open(os.path.join(out, "summary.json"), "w") as f:
+        json.dump({"mode": mode, "cell": cell, "ppd": ppd, "width": scene.width, "height": scene.height,
+                   "tau_c": scene.tau_c, "base_friction": BASE_MU, "wall_runs": t_runs, "wall_total": t_all,
+                   "jobs": args.jobs, "rows": rows}, f, indent=1, default=float)
+    log(table)
+    if args.sweep:
+        run_sweep(bins, out, cell, ppd, args.jobs)
+    log("study done: %.1f s wall (runs %.1f s)" % (time.perf_counter() - t_start, t_runs))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
