@@ -3,6 +3,7 @@
 #
 # Usage: fem_tcl column_collapse.tcl <outdir> ?-width 50? ?-height 40? ?-cell 1.0? ?-tend 5.0? ?-dt 1e-3?
 #            ?-record 0.05? ?-phi 22.2? ?-cohesion 0.1? ?-friction-base fixed? ?-tol 1e-6? ?-max-cuts 8?
+#            ?-on-inversion stop?
 #
 # Units kN, m, s, kPa, Mg/m3: E = 172e3 kPa, nu = 0.23, rho = 1.925 Mg/m3, g = 9.81 m/s2, plane strain.
 # Mesh: width/cell x height/cell SSPquads; node tags 1..N row by row from the bottom-left (node (i, j) at
@@ -29,8 +30,10 @@
 #
 # Step cutting: when `analyze 1 dt` fails the step is halved and retried (up to -max-cuts times); after two
 # converged steps at a cut level the step doubles again. Every record time (k * record, and 0.5, 1, 2, 3 s) is
-# landed on exactly. The run stops cleanly when the mesh inverts (minimum corner det J <= 0) or a step fails at
-# the deepest cut; the files are then complete up to the last converged step.
+# landed on exactly. The run stops cleanly when a step fails at the deepest cut, and by default (-on-inversion
+# stop) when the mesh inverts (minimum corner det J <= 0); the files are then complete up to the last converged
+# step. `-on-inversion continue` goes on to tend past inverted corners (the paper's FEM run went on to 5 s; an
+# SSPquad is still integrable while the det J at its centre, its one integration point, stays positive).
 #
 # Output in <outdir>:
 #   model.json     print -JSON after the model is built
@@ -42,17 +45,17 @@
 # and a summary line on stdout.
 
 proc usage {} {
-    return "usage: fem_tcl column_collapse.tcl <outdir> ?-width 50? ?-height 40? ?-cell 1.0? ?-tend 5.0? ?-dt 1e-3? ?-record 0.05? ?-phi 22.2? ?-cohesion 0.1? ?-friction-base fixed? ?-tol 1e-6? ?-max-cuts 8?"
+    return "usage: fem_tcl column_collapse.tcl <outdir> ?-width 50? ?-height 40? ?-cell 1.0? ?-tend 5.0? ?-dt 1e-3? ?-record 0.05? ?-phi 22.2? ?-cohesion 0.1? ?-friction-base fixed? ?-tol 1e-6? ?-max-cuts 8? ?-on-inversion stop|continue?"
 }
 
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} { error "column_collapse.tcl: missing <outdir>; [usage]" }
 set outdir [lindex $argv 0]
 array set opt {-width 50.0 -height 40.0 -cell 1.0 -tend 5.0 -dt 1e-3 -record 0.05 -phi 22.2 -cohesion 0.1
-               -friction-base fixed -tol 1e-6 -max-cuts 8}
+               -friction-base fixed -tol 1e-6 -max-cuts 8 -on-inversion stop}
 foreach {key value} [lrange $argv 1 end] {
     if {![info exists opt($key)]} { error "column_collapse.tcl: unknown option '$key'; [usage]" }
     if {$value eq ""} { error "column_collapse.tcl: missing value after '$key'; [usage]" }
-    if {$key ne "-friction-base" && ![string is double -strict $value]} {
+    if {$key ne "-friction-base" && $key ne "-on-inversion" && ![string is double -strict $value]} {
         error "column_collapse.tcl: expected a number after '$key', got '$value'"
     }
     set opt($key) $value
@@ -60,6 +63,9 @@ foreach {key value} [lrange $argv 1 end] {
 if {[llength [lrange $argv 1 end]] % 2 != 0} { error "column_collapse.tcl: option '[lindex $argv end]' has no value; [usage]" }
 if {$opt(-friction-base) ne "fixed"} {
     error "column_collapse.tcl: -friction-base '$opt(-friction-base)' is not supported (only 'fixed': ux = uy = 0 on the base)"
+}
+if {$opt(-on-inversion) ni {stop continue}} {
+    error "column_collapse.tcl: expected -on-inversion stop or continue, got '$opt(-on-inversion)'"
 }
 foreach key {-width -height -cell -tend -dt -record} {
     if {!($opt($key) > 0.0)} { error "column_collapse.tcl: expected $key > 0, got $opt($key)" }
@@ -161,6 +167,7 @@ set totalIter 0
 set level 0         ;# current cut level: dt = dt0 / 2^level
 set goodAtLevel 0
 set stopReason ""
+set firstInverted ""
 set wall0 [clock microseconds]
 set t 0.0
 foreach target $targets {
@@ -192,7 +199,10 @@ foreach target $targets {
             if {$goodAtLevel >= 2} { incr level -1; set goodAtLevel 0 }
         }
         set mj [minJacobian]
-        if {[lindex $mj 0] <= 0.0} {
+        if {[lindex $mj 0] <= 0.0 && $firstInverted eq ""} {
+            set firstInverted [format "%.6g s (element %d)" $t [lindex $mj 1]]
+        }
+        if {[lindex $mj 0] <= 0.0 && $opt(-on-inversion) eq "stop"} {
             set stopReason [format "the mesh inverted at t = %.6g s (element %d, corner det J = %.4g)" $t [lindex $mj 1] [lindex $mj 0]]
             break
         }
@@ -206,7 +216,10 @@ set wall [expr {([clock microseconds] - $wall0) * 1e-6}]
 remove recorders
 
 set mj [minJacobian]
-if {$stopReason eq ""} { set stopReason "reached t = $tend s" }
+if {$stopReason eq ""} {
+    set stopReason "reached t = $tend s"
+    if {$firstInverted ne ""} { append stopReason " (the mesh first inverted at $firstInverted)" }
+}
 puts stdout [format "column_collapse: %s; %dx%d SSPquads, %d steps (%d cut, %d failed attempts), %.2f Newton iterations/step, wall %.2f s (%.2f ms/step), final min det J %.4g (element %d)" \
     $stopReason $nx $ny $nSteps $nCutSteps $nFailed [expr {$nSteps > 0 ? double($totalIter) / $nSteps : 0.0}] \
     $wall [expr {$nSteps > 0 ? 1e3 * $wall / $nSteps : 0.0}] [lindex $mj 0] [lindex $mj 1]]

@@ -1,0 +1,171 @@
+// Verification at reduced size of scripts/column_collapse/column_collapse.tcl (the FEM-only reference scene):
+// a 10 m x 8 m column (same aspect ratio 0.8 as the paper's 50 x 40 m; 1 m SSPquads), elastic gravity with
+// MohrCoulomb in stage 0, the switch to Mohr-Coulomb (phi 22.2, c 0.1 kPa) and 1 s of Newmark collapse.
+// Checks, with their references:
+//  - the script's contract: files, rows every 0.05 s from t = 0, rows exactly at 0.5 and 1 s, node/element order;
+//  - after the switch (t = 0 row) the stresses are the elastic geostatic ones: szz = nu (sxx + syy) (plane
+//    strain) and syy = -rho g (H - y) within 3 % in the interior of the bottom row (1D column, self weight);
+//  - the first plastic steps converge (the K0 = 0.30 state is outside the yield surface, which needs a ratio of
+//    at least Ka = (1 - sin phi) / (1 + sin phi) = 0.45, so the first step returns the whole column);
+//  - energy: with Newmark average acceleration (no numerical dissipation) and dissipative plasticity,
+//    KE(t) <= PE(0) - PE(t) (+ the small elastic energy released, bounded by 2 % of the drop);
+//  - the physics of the collapse at t = 1 s (t / tau_c = 1.1, tau_c = sqrt(H / g) = 0.90 s): the crest settles
+//    (top-right node: uy < -0.4 m), the face moves right (the right-face node one metre above the fixed base:
+//    ux > 0.05 m), potential energy has dropped by 1 % to 10 % (measured 5.1 %), no element has
+//    inverted (min corner det J > 0), and no step needed cutting.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "support/tolerance.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Table = std::vector<std::vector<double>>;
+
+Table read_table(const fs::path& file, char sep = ' ') {
+  std::ifstream in(file);
+  Table rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (sep != ' ') for (char& c : line) if (c == sep) c = ' ';
+    std::istringstream ls(line);
+    std::vector<double> row;
+    double v;
+    while (ls >> v) row.push_back(v);
+    if (!row.empty()) rows.push_back(row);
+  }
+  return rows;
+}
+
+constexpr int kNx = 10, kNy = 8;
+constexpr double kRho = 1.925, kG = 9.81, kNu = 0.23;
+
+class ColumnCollapse : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("geoflow_column_collapse_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    const std::string cmd = "\"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() + "\" \"" +
+                            (fs::path(GEOFLOW_SOURCE_DIR) / "scripts/column_collapse/column_collapse.tcl").string() +
+                            "\" \"" + dir_.string() + "\" -width 10 -height 8 -tend 1.0 > \"" +
+                            (fs::temp_directory_path() / ("geoflow_column_collapse_" + std::to_string(::getpid()) + ".txt")).string() +
+                            "\" 2>&1";
+    status_ = std::system(cmd.c_str());
+  }
+  static void TearDownTestSuite() {
+    fs::remove(fs::temp_directory_path() / ("geoflow_column_collapse_" + std::to_string(::getpid()) + ".txt"));
+    if (::testing::UnitTest::GetInstance()->failed_test_count() == 0) fs::remove_all(dir_);
+  }
+  static fs::path dir_;
+  static int status_;
+
+  /// Lumped nodal masses (element area x rho / 4 per corner) of the 1 m mesh.
+  static std::vector<double> masses() {
+    std::vector<double> m((kNx + 1) * (kNy + 1), 0.0);
+    for (int j = 0; j < kNy; ++j)
+      for (int i = 0; i < kNx; ++i) {
+        const int n1 = j * (kNx + 1) + i;
+        for (int n : {n1, n1 + 1, n1 + kNx + 1, n1 + kNx + 2}) m[n] += 0.25 * kRho;
+      }
+    return m;
+  }
+  static double potential(const std::vector<double>& disp_row) {
+    const auto m = masses();
+    double pe = 0.0;
+    for (std::size_t n = 0; n < m.size(); ++n) pe += m[n] * kG * (static_cast<double>(n / (kNx + 1)) + disp_row[1 + 2 * n + 1]);
+    return pe;
+  }
+  static double kinetic(const std::vector<double>& vel_row) {
+    const auto m = masses();
+    double ke = 0.0;
+    for (std::size_t n = 0; n < m.size(); ++n) {
+      const double vx = vel_row[1 + 2 * n], vy = vel_row[1 + 2 * n + 1];
+      ke += 0.5 * m[n] * (vx * vx + vy * vy);
+    }
+    return ke;
+  }
+};
+
+fs::path ColumnCollapse::dir_;
+int ColumnCollapse::status_ = -1;
+
+TEST_F(ColumnCollapse, WritesTheContractedFiles) {
+  ASSERT_EQ(status_, 0);
+  for (const char* f : {"model.json", "disp.out", "vel.out", "stress.out", "mesh_quality.out", "steps.csv"}) {
+    EXPECT_TRUE(fs::exists(dir_ / f)) << f;
+  }
+  const Table disp = read_table(dir_ / "disp.out");
+  const Table vel = read_table(dir_ / "vel.out");
+  const Table stress = read_table(dir_ / "stress.out");
+  ASSERT_EQ(disp.size(), 21u);  // t = 0, 0.05, ..., 1
+  ASSERT_EQ(vel.size(), 21u);
+  ASSERT_EQ(stress.size(), 21u);
+  for (std::size_t k = 0; k < disp.size(); ++k) {
+    EXPECT_CLOSE(disp[k][0], 0.05 * k, 1e-9, 0.0);
+    EXPECT_EQ(disp[k].size(), 1u + 2u * (kNx + 1) * (kNy + 1));
+    EXPECT_EQ(stress[k].size(), 1u + 6u * kNx * kNy);
+  }
+  EXPECT_EQ(disp[10][0], 0.5);
+  EXPECT_EQ(disp[20][0], 1.0);
+  const Table steps = read_table(dir_ / "steps.csv", ',');  // the header line has no numbers
+  ASSERT_EQ(steps.size(), 1000u);
+  EXPECT_EQ(steps.back()[0], 1.0);
+  for (const auto& s : steps) EXPECT_EQ(s[3], 0.0) << "cut step at t = " << s[0];
+  const Table mq = read_table(dir_ / "mesh_quality.out");
+  ASSERT_EQ(mq.size(), 1001u);  // t = 0 and every step
+  for (const auto& r : mq) {
+    ASSERT_EQ(r.size(), 5u);
+    EXPECT_GT(r[1], 0.0) << "inverted element " << r[2] << " at t = " << r[0];
+  }
+}
+
+TEST_F(ColumnCollapse, StressesAfterTheSwitchAreElasticAndTheFirstPlasticStepsConverge) {
+  ASSERT_EQ(status_, 0);
+  const Table stress = read_table(dir_ / "stress.out");
+  const auto& s0 = stress.at(0);
+  ASSERT_EQ(s0[0], 0.0);
+  for (int e = 0; e < kNx * kNy; ++e) {
+    const double* s = &s0[1 + 6 * e];
+    EXPECT_CLOSE(s[2], kNu * (s[0] + s[1]), 1e-3, 1e-4) << "element " << e + 1;
+  }
+  for (int i = 1; i < kNx - 2; ++i) {  // bottom row away from the free face
+    EXPECT_CLOSE(s0[1 + 6 * i + 1], -kRho * kG * (kNy - 0.5), 0.0, 0.03) << "element " << i + 1;
+  }
+  const Table steps = read_table(dir_ / "steps.csv", ',');
+  ASSERT_GE(steps.size(), 5u);
+  for (int k = 0; k < 5; ++k) EXPECT_LE(steps[k][2], 8.0) << "iterations of plastic step " << k + 1;
+}
+
+TEST_F(ColumnCollapse, CollapsesDissipatingEnergy) {
+  ASSERT_EQ(status_, 0);
+  const Table disp = read_table(dir_ / "disp.out");
+  const Table vel = read_table(dir_ / "vel.out");
+  const double pe0 = potential(disp[0]);
+  for (std::size_t k = 1; k < disp.size(); ++k) {
+    const double drop = pe0 - potential(disp[k]);
+    EXPECT_LE(kinetic(vel[k]), drop + 0.02 * std::abs(drop) + 1e-6 * pe0) << "t = " << disp[k][0];
+  }
+  const auto& last = disp.back();
+  const int top_right = (kNy + 1) * (kNx + 1) - 1;  // 0-based node index
+  const int face_row1 = 2 * (kNx + 1) - 1;
+  const double crest_uy = last[1 + 2 * top_right + 1];
+  const double face_ux = last[1 + 2 * face_row1];
+  const double pe_ratio = potential(last) / pe0;
+  std::printf("t = 1 s: crest uy %.4f m, face ux (y = 1 m) %.4f m, PE/PE0 %.4f, KE/PE0 %.4f\n", crest_uy, face_ux,
+              pe_ratio, kinetic(vel.back()) / pe0);
+  EXPECT_LT(crest_uy, -0.4);
+  EXPECT_GT(face_ux, 0.05);
+  EXPECT_LT(pe_ratio, 0.99);
+  EXPECT_GT(pe_ratio, 0.90);
+}
+
+}  // namespace
