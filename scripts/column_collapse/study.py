@@ -337,13 +337,14 @@ def fem_series(fem_dir, cell):
         for k in s:
             out[k].append(s[k])
     out = {k: np.array(v) for k, v in out.items()}
-    out["minJ_t"], out["minJ"] = fem_min_jacobian(fem_dir)
-    out["minJ0"] = cell * cell / 4.0   # corner det J of an undistorted square element
+    out["minJ_t"], out["minJ"], is_ratio = fem_min_jacobian(fem_dir)
+    out["minJ0"] = 1.0 if is_ratio else cell * cell / 4.0   # corner det J of an undistorted square element
     return out, xy, disp
 
 
 def fem_min_jacobian(fem_dir):
-    """The mesh-quality series: the first file whose name says Jacobian/quality; rows `time minDetJ [element]`."""
+    """The mesh-quality series (fem_tcl's `recorder MeshQuality`: rows `time minDetJ element minRatio element`,
+    minRatio = det J / reference det J): returns time and the ratio (or det J when the file has no ratio)."""
     cands = [p for p in sorted(glob.glob(os.path.join(fem_dir, "*")))
              if any(k in os.path.basename(p).lower() for k in ("jac", "quality", "meshq"))
              and not p.endswith((".log", ".json"))]
@@ -352,9 +353,11 @@ def fem_min_jacobian(fem_dir):
             a = read_recorder(p)
         except (ValueError, OSError):
             continue
+        if a.ndim == 2 and a.shape[1] >= 4:
+            return a[:, 0], a[:, 3], True
         if a.ndim == 2 and a.shape[1] >= 2:
-            return a[:, 0], a[:, 1]
-    return np.array([]), np.array([])
+            return a[:, 0], a[:, 1], False
+    return np.array([]), np.array([]), True
 
 
 def fem_outline(xy, u, width, height, cell):
@@ -508,9 +511,12 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
             if p is None:
                 continue
             sel = p["coord_x"] < L0 * 1.6
-            sc = ax.scatter(p["coord_x"][sel], p["coord_y"][sel], c=p["tau_xy"][sel] / 1e3, s=1.5, cmap="RdBu_r",
-                            vmin=-120, vmax=120, linewidths=0)
-            ax.set_title("%s, t = %g s" % (title, t), fontsize=8)
+            spacing = scene.cell / scene.ppd
+            sc = ax.scatter(p["coord_x"][sel], p["coord_y"][sel], c=p["tau_xy"][sel] / 1e3, s=(3.0 * spacing) ** 2,
+                            marker="s", cmap="RdBu_r", vmin=-120, vmax=120, linewidths=0)
+            ser = read_series(run["results"])
+            ci = ser["checkerboard_index"][int(np.argmin(np.abs(ser["time"] + run["t0"] - t)))]
+            ax.set_title("%s, t = %g s\ncheckerboard index %.3f" % (title, t, ci), fontsize=8)
             ax.set_aspect("equal")
             ax.set_xlabel("x (m)")
         np.atleast_1d(axs)[0].set_ylabel("y (m)")
@@ -665,7 +671,8 @@ def main(argv=None):
         log("sweep done in %.1f s" % (time.perf_counter() - t_start))
         return 0
 
-    scene = Scene(args.width, args.height, cell, ppd, fem_dt=args.fem_dt, t_total=args.t_total)
+    scene = Scene(args.width, args.height, cell, ppd, fem_dt=args.fem_dt, t_total=args.t_total,
+                  out_every=0.2 if args.full else 0.1)
     transfers = [float(t) for t in args.transfers.split(",") if t.strip()]
     fem_tend = max([args.fem_tend] + transfers)
     log("study (%s): column %g x %g m, cell %g m, %d x %d particles per cell, tau_c = %.2f s, base friction %.3f, out %s"
