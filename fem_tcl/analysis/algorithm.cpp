@@ -16,6 +16,7 @@ AlgorithmConfig parse_algorithm(common::CommandArgs& args) {
   else args.fail("unknown algorithm '" + type + "'");
   while (!args.empty()) {
     if (args.flag("-initial")) c.initial_tangent = true;
+    else if (args.flag("-elasticTangent")) c.elastic_tangent = true;
     else if (args.flag("-initialThenCurrent") || args.flag("-factorOnce")) {}  // same converged result
     else if (args.flag("-secant") || args.flag("-current")) {}
     else if (args.flag("-maxDim")) c.krylov_max_dim = args.integer("-maxDim value");
@@ -158,7 +159,7 @@ bool solve_step(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& 
       ++iterations;
       return true;
     }
-    case AlgorithmType::Newton: return newton(p, test, ws, iterations, config.initial_tangent);
+    case AlgorithmType::Newton: return newton(p, test, ws, iterations, config.initial_tangent || config.elastic_tangent);
     case AlgorithmType::ModifiedNewton: return newton(p, test, ws, iterations, true);
     case AlgorithmType::KrylovNewton: return krylov_newton(config, p, test, ws, iterations);
     case AlgorithmType::NewtonLineSearch: return newton_line_search(config, p, test, ws, iterations);

@@ -31,6 +31,9 @@ enum class AlgorithmType { Linear, Newton, ModifiedNewton, KrylovNewton, NewtonL
 struct AlgorithmConfig {
   AlgorithmType type = AlgorithmType::Newton;
   bool initial_tangent = false;  ///< -initial: the initial stiffness, factored once (Newton, ModifiedNewton)
+  /// -elasticTangent (fem_tcl extension): every element's elastic stiffness (Element::elastic_stiffness), so
+  /// the matrix stays the same from step to step while dt does and is factored once.
+  bool elastic_tangent = false;
   int krylov_max_dim = 3;
   double line_search_tol = 0.8;
   int line_search_max_iter = 10;

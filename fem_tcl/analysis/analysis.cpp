@@ -160,7 +160,10 @@ void Analysis::form_tangent() {
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     domain::Element& el = *elements_[e];
     // `algorithm Newton -initial`: the initial stiffness replaces the current tangent (OpenSees INITIAL_TANGENT)
-    ke.noalias() = c1_ * (config_.algorithm.initial_tangent ? el.initial_stiffness() : el.tangent_stiffness());
+    // `-elasticTangent` (fem_tcl): the elastic stiffness, the same matrix every step (factored once per dt)
+    ke.noalias() = c1_ * (config_.algorithm.elastic_tangent   ? el.elastic_stiffness()
+                          : config_.algorithm.initial_tangent ? el.initial_stiffness()
+                                                              : el.tangent_stiffness());
     if (c2_ != 0.0 || c3_ != 0.0) {
       const domain::RayleighFactors& f = el.rayleigh();
       if (c2_ != 0.0) {

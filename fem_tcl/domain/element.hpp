@@ -42,6 +42,9 @@ class Element {
   virtual void update() = 0;
   virtual const Matrix8& tangent_stiffness() = 0;
   virtual const Matrix8& initial_stiffness() = 0;
+  /// Stiffness from the materials' initial (elastic) tangents (fem_tcl's `-elasticTangent` algorithms); the
+  /// same as initial_stiffness() except where that follows an OpenSees quirk (SSPquad: current tangent).
+  virtual const Matrix8& elastic_stiffness() { return initial_stiffness(); }
   /// Diagonal of the lumped mass matrix.
   virtual const Vector8& lumped_mass() = 0;
   /// Internal force minus body forces minus element loads (OpenSees getResistingForce), no inertia/damping.

@@ -90,6 +90,12 @@ const Matrix8& SSPquad::tangent_stiffness() {
   return K_;
 }
 
+const Matrix8& SSPquad::elastic_stiffness() {
+  Kel_.noalias() = Kstab_;
+  Kel_.noalias() += (4.0 * J0_ * thickness_) * (B0_.transpose() * material_->initial_tangent() * B0_);
+  return Kel_;
+}
+
 const Vector8& SSPquad::lumped_mass() {
   const double rho = material_->density();
   for (int i = 0; i < 4; ++i) {

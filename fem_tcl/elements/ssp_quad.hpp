@@ -28,6 +28,8 @@ class SSPquad final : public domain::Element {
   void update() override;
   const Matrix8& tangent_stiffness() override;
   const Matrix8& initial_stiffness() override { return tangent_stiffness(); }  // as OpenSees (quirk 8)
+  /// Kstab + 4 J0 t B0^T C0 B0 with the material's initial tangent C0.
+  const Matrix8& elastic_stiffness() override;
   const Vector8& lumped_mass() override;
   const Vector8& resisting_force() override;
   void commit_state() override;
@@ -53,6 +55,7 @@ class SSPquad final : public domain::Element {
   Eigen::Matrix<double, 3, 8> B0_ = Eigen::Matrix<double, 3, 8>::Zero();
   Matrix8 Kstab_ = Matrix8::Zero();
   Matrix8 K_ = Matrix8::Zero();
+  Matrix8 Kel_ = Matrix8::Zero();
   Vector8 mass_ = Vector8::Zero();
   Vector8 force_ = Vector8::Zero();
 };

@@ -13,6 +13,7 @@ MohrCoulomb::MohrCoulomb(int tag, const MohrCoulombParameters& params) : NDMater
   validate();
   update_constants();
   tangent_ = elastic_tangent();
+  tangent_stale_ = false;
 }
 
 void MohrCoulomb::validate() const {
@@ -61,16 +62,29 @@ void MohrCoulomb::set_trial_strain(const Vector3& strain) {
     trial_plastic_ = committed_plastic_;
     region_ = constitutive::ReturnRegion::Elastic;
     tangent_ = elastic_tangent();
+    tangent_stale_ = false;
   } else {
     const constitutive::MohrCoulombUpdate up = constitutive::mohr_coulomb_return(trial, elasticity_, strength_);
     trial_stress4_ = up.stress;
     trial_plastic_ = committed_plastic_ + up.plastic_strain_increment;
     region_ = up.region;
-    tangent_ = up.region == constitutive::ReturnRegion::Elastic
-                   ? elastic_tangent()
-                   : constitutive::mohr_coulomb_tangent(trial, elasticity_, strength_);
+    if (up.region == constitutive::ReturnRegion::Elastic) {
+      tangent_ = elastic_tangent();
+      tangent_stale_ = false;
+    } else {
+      tangent_trial_ = trial;
+      tangent_stale_ = true;
+    }
   }
   stress_ << trial_stress4_[0], trial_stress4_[1], trial_stress4_[3];
+}
+
+const Matrix3& MohrCoulomb::tangent() const {
+  if (tangent_stale_) {
+    tangent_ = constitutive::mohr_coulomb_tangent(tangent_trial_, elasticity_, strength_);
+    tangent_stale_ = false;
+  }
+  return tangent_;
 }
 
 void MohrCoulomb::commit_state() {
@@ -93,6 +107,7 @@ void MohrCoulomb::revert_to_start() {
   committed_plastic_.setZero();
   revert_to_last_commit();
   tangent_ = elastic_tangent();
+  tangent_stale_ = false;
 }
 
 Vector6 MohrCoulomb::stress_3d() const {

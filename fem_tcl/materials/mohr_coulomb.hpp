@@ -39,7 +39,9 @@ class MohrCoulomb final : public NDMaterial {
   void set_trial_strain(const Vector3& strain) override;
   const Vector3& strain() const override { return strain_; }
   const Vector3& stress() const override { return stress_; }
-  const Matrix3& tangent() const override { return tangent_; }
+  /// The consistent tangent, evaluated on first request after set_trial_strain (algorithms that iterate on an
+  /// elastic or initial matrix never pay for it).
+  const Matrix3& tangent() const override;
   Matrix3 initial_tangent() const override { return elastic_tangent(); }
   void commit_state() override;
   void revert_to_last_commit() override;
@@ -80,7 +82,9 @@ class MohrCoulomb final : public NDMaterial {
   Eigen::Vector4d trial_stress4_ = Eigen::Vector4d::Zero();
   Eigen::Vector4d trial_plastic_ = Eigen::Vector4d::Zero();
   Vector3 stress_ = Vector3::Zero();
-  Matrix3 tangent_ = Matrix3::Zero();
+  mutable Matrix3 tangent_ = Matrix3::Zero();
+  mutable bool tangent_stale_ = false;        ///< tangent_ still to be evaluated at tangent_trial_
+  Eigen::Vector4d tangent_trial_ = Eigen::Vector4d::Zero();  ///< elastic trial stress of the last plastic update
   constitutive::ReturnRegion region_ = constitutive::ReturnRegion::Elastic;
 };
 

@@ -133,7 +133,7 @@ constraints Transformation
 numberer RCM
 system UmfPack
 test NormDispIncr $opt(-tol) 25
-algorithm KrylovNewton -iterate initial -increment initial -maxDim 6
+algorithm KrylovNewton -elasticTangent -maxDim 6
 integrator Newmark 0.5 0.25
 analysis Transient
 
