@@ -1,12 +1,13 @@
 # Strip footing on weightless undrained clay (Tresca: MohrCoulomb with phi = 0, psi = 0), plane strain, half
 # model by symmetry. Prandtl (1920) / Hill (1950): collapse pressure q_u = (2 + pi) c for a rigid footing,
 # smooth or rough (Chen 1975, Limit Analysis and Soil Plasticity, sec. 5; de Souza Neto et al. 2008, sec. 8.3.2).
-# Usage: fem_tcl strip_footing.tcl ?n? ?element? ?footing? ?steps?
+# Usage: fem_tcl strip_footing.tcl ?n? ?element? ?footing? ?steps? ?algorithm? ?printFlag?
 #   n        elements across the footing half-width b = 1 m (default 4); the domain is 5 b wide and 5 b deep
 #   element  SSPquad (default) or quad
 #   footing  smooth (rigid, uy prescribed, ux free: default), rough (rigid, ux = 0 too) or flexible
 #            (uniform pressure, load control; stops at the last converged load)
 #   steps    load / displacement steps (default 40)
+#   algorithm NewtonLineSearch (default) or any other `algorithm` type; printFlag: the test's (default 0)
 # Prints "q/c <value>" for each step (footing pressure over c, positive in compression) and "limit q/c <value>"
 # (the last converged step) at the end. Equilibrium: NewtonLineSearch (plain Newton diverges on the first plastic
 # step under the footing edge on meshes of 8 elements per half-width and finer).
@@ -16,6 +17,8 @@ set n [expr {$argc >= 1 ? [lindex $argv 0] : 4}]
 set eleType [expr {$argc >= 2 ? [lindex $argv 1] : "SSPquad"}]
 set footing [expr {$argc >= 3 ? [lindex $argv 2] : "smooth"}]
 set nsteps [expr {$argc >= 4 ? [lindex $argv 3] : 40}]
+set alg [expr {$argc >= 5 ? [lindex $argv 4] : "NewtonLineSearch"}]
+set printFlag [expr {$argc >= 6 ? [lindex $argv 5] : 0}]
 set b 1.0
 set L [expr {5.0 * $b}]
 set h [expr {$b / $n}]
@@ -74,8 +77,8 @@ if {$footing eq "flexible"} {
 constraints Transformation
 numberer RCM
 system UmfPack
-test NormUnbalance 1.0e-8 30
-algorithm NewtonLineSearch
+test NormUnbalance 1.0e-8 30 $printFlag
+algorithm $alg
 integrator LoadControl [expr {1.0 / $nsteps}]
 analysis Static
 set qLast 0.0
