@@ -91,8 +91,14 @@ const Matrix8& SSPquad::tangent_stiffness() {
 }
 
 const Matrix8& SSPquad::elastic_stiffness() {
-  Kel_.noalias() = Kstab_;
-  Kel_.noalias() += (4.0 * J0_ * thickness_) * (B0_.transpose() * material_->initial_tangent() * B0_);
+  // Kstab is fixed at construction; rebuild only when the material's initial tangent changed.
+  const materials::Matrix3 C = material_->initial_tangent();
+  if (!elastic_valid_ || C != elastic_C_) {
+    Kel_.noalias() = Kstab_;
+    Kel_.noalias() += (4.0 * J0_ * thickness_) * (B0_.transpose() * C * B0_);
+    elastic_C_ = C;
+    elastic_valid_ = true;
+  }
   return Kel_;
 }
 

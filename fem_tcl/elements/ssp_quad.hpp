@@ -56,6 +56,8 @@ class SSPquad final : public domain::Element {
   Matrix8 Kstab_ = Matrix8::Zero();
   Matrix8 K_ = Matrix8::Zero();
   Matrix8 Kel_ = Matrix8::Zero();
+  materials::Matrix3 elastic_C_ = materials::Matrix3::Zero();  ///< the initial tangent Kel_ was built with
+  bool elastic_valid_ = false;
   Vector8 mass_ = Vector8::Zero();
   Vector8 force_ = Vector8::Zero();
 };
