@@ -161,7 +161,7 @@ set targets [lsort -real -unique $targets]
 set steps [open [file join $outdir steps.csv] w]
 puts $steps "time,dt,iterations,cut_level"
 set nSteps 0
-set nCutSteps 0     ;# steps that converged only after at least one cut
+set nCutSteps 0     ;# steps taken at a cut dt (cut level > 0): the "cut steps" of the summary
 set nFailed 0       ;# analyze calls that failed (each followed by a cut, or the stop)
 set totalIter 0
 set level 0         ;# current cut level: dt = dt0 / 2^level
@@ -175,12 +175,10 @@ foreach target $targets {
         set h [expr {$dt0 / pow(2, $level)}]
         # land exactly on the target; absorb a sliver below 1 % of a step into the last step
         if {$target - $t < 1.01 * $h} { set h [expr {$target - $t}] }
-        set cutThisStep 0
         while {[set ok [analyze 1 $h]] != 0} {
             incr nFailed
             if {$level >= $maxCuts} { break }
             incr level
-            incr cutThisStep
             set goodAtLevel 0
             set h [expr {$h / 2.0}]
         }
