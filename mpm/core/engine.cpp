@@ -339,63 +339,32 @@ void Engine::step() {
 
 /// One explicit step; USF, USL and MUSL differ only in the order of the calls (CB-Geo
 /// include/solvers/mpm_scheme/mpm_scheme_{usf,usl,musl}.tcc; Bardenhagen 2002 for USF/USL, Sulsky,
-/// Zhou & Schreyer 1995 for MUSL). Particle phases run over chunks, node phases over the rows of the
-/// active box; each barrier separates a particle phase from a node phase. reduce_row,
-/// nodal_velocity_row and integrate_row work node by node on the same row: no barrier between them.
+/// Zhou & Schreyer 1995 for MUSL). Runs inside one parallel region: particle phases run over chunks,
+/// node phases over the rows of the active box; each phase first waits (barrier) for the one before,
+/// except p2g of the mass, which starts every step.
 template <class Shape>
 void Engine::run_step() {
   switch (scheme_) {
-    case io::Scheme::USF:  // update stress first: strain rate from the momentum velocity
-      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, /*shape_functions=*/true, /*mass_momentum=*/true, /*forces=*/false); });
-#pragma omp barrier
-      for_each_row([&](int j) {
-        reduce_row(j, true, true, false);
-        nodal_velocity_row(j);
-      });
-#pragma omp barrier
-      update_stress<Shape>(velocity_.data(), 2, /*strain_ready=*/false);
-#pragma omp barrier
-      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, false, false, /*forces=*/true); });  // from the updated stress
-#pragma omp barrier
-      for_each_row([&](int j) {
-        reduce_row(j, false, false, true);
-        integrate_row(j);
-      });
-#pragma omp barrier
-      for_each_chunk([&](std::size_t c) { g2p<Shape>(c, false, false); });
+    case io::Scheme::USF:  // update stress first: strain rate from the velocity of the mapped momentum
+      p2g<Shape>(kMassMomentum);
+      nodal_velocity(kMassMomentum);
+      update_stress<Shape>(StrainFrom::NodalVelocity);
+      p2g<Shape>(kForces);  // from the updated stress
+      update_grid(kForces);
+      g2p<Shape>(G2pAlso::Nothing);
       break;
     case io::Scheme::USL:  // update stress last: strain rate from the updated grid velocity
-      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, true, true, true); });
-#pragma omp barrier
-      for_each_row([&](int j) {
-        reduce_row(j, true, true, true);
-        nodal_velocity_row(j);
-        integrate_row(j);
-      });
-#pragma omp barrier
-      // USL: g2p also takes the strain increment from the same updated grid velocity.
-      for_each_chunk([&](std::size_t c) { g2p<Shape>(c, /*strain_increments=*/true, false); });
-#pragma omp barrier
-      update_stress<Shape>(updated_.data(), 4, /*strain_ready=*/true);
+      p2g<Shape>(kAllFields);
+      update_grid(kAllFields);
+      g2p<Shape>(G2pAlso::StrainIncrements);
+      update_stress<Shape>(StrainFrom::G2p);
       break;
     case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
-      for_each_chunk([&](std::size_t c) { p2g<Shape>(c, true, true, true); });
-#pragma omp barrier
-      for_each_row([&](int j) {
-        reduce_row(j, true, true, true);
-        nodal_velocity_row(j);
-        integrate_row(j);
-      });
-#pragma omp barrier
-      // MUSL: g2p also maps the updated momentum m N v back to the nodes.
-      for_each_chunk([&](std::size_t c) { g2p<Shape>(c, false, /*remap_momentum=*/true); });
-#pragma omp barrier
-      for_each_row([&](int j) {
-        reduce_row(j, false, true, false);
-        nodal_velocity_row(j);
-      });
-#pragma omp barrier
-      update_stress<Shape>(velocity_.data(), 2, /*strain_ready=*/false);
+      p2g<Shape>(kAllFields);
+      update_grid(kAllFields);
+      g2p<Shape>(G2pAlso::RemapMomentum);
+      nodal_velocity(kMomentum);
+      update_stress<Shape>(StrainFrom::NodalVelocity);
       break;
   }
 }
@@ -412,6 +381,41 @@ void Engine::for_each_row(F&& f) {
   for (int j = bj0_; j < bj1_; ++j) f(j);
 }
 
+/// Waits for every thread of the step's parallel region (called from inside it).
+static inline void wait_for_previous_phase() {
+#pragma omp barrier
+}
+
+template <class Shape>
+void Engine::p2g(GridFields fields) {
+  assert(fields.mass == fields.momentum);
+  if (!fields.mass) wait_for_previous_phase();  // the mass is mapped first in every scheme
+  for_each_chunk([&](std::size_t c) { p2g_chunk<Shape>(c, fields); });
+}
+
+void Engine::nodal_velocity(GridFields summed) {
+  wait_for_previous_phase();
+  for_each_row([&](int j) {
+    reduce_row(j, summed);
+    nodal_velocity_row(j);
+  });
+}
+
+void Engine::update_grid(GridFields summed) {
+  wait_for_previous_phase();
+  for_each_row([&](int j) {
+    reduce_row(j, summed);
+    if (summed.momentum) nodal_velocity_row(j);
+    integrate_row(j);
+  });
+}
+
+template <class Shape>
+void Engine::g2p(G2pAlso also) {
+  wait_for_previous_phase();
+  for_each_chunk([&](std::size_t c) { g2p_chunk<Shape>(c, also); });
+}
+
 double* Engine::cleared_band(std::size_t c) {
   double* g = pool_.data() + chunk_offset_[c];
   std::fill_n(g, static_cast<std::size_t>(chunk_row1_[c] - chunk_row0_[c]) * static_cast<std::size_t>(box_width_) * 5, 0.0);
@@ -419,15 +423,17 @@ double* Engine::cleared_band(std::size_t c) {
 }
 
 /// Particle-to-grid transfer (Sulsky et al. 1994, eqs. 14-17): nodal mass sum m N, momentum sum m N v,
-/// force sum m N g - V grad(N) . sigma. With `shape_functions` the particle's weights are computed
-/// (once per step) and stored for the later phases. Reads the current particle state through order_,
-/// except the forces of USF, which use the stress and volume just updated (next buffer).
+/// force sum m N g - V grad(N) . sigma. The pass that maps the mass (the first of a step) computes the
+/// particle's weights (once per step) and stores them for the later phases. Reads the current particle
+/// state through order_, except the forces of USF, which use the stress and volume just updated (next
+/// buffer).
 template <class Shape>
-void Engine::p2g(std::size_t c, bool shape_functions, bool mass_momentum, bool forces) {
+void Engine::p2g_chunk(std::size_t c, GridFields fields) {
   constexpr int W = Shape::kWidth;
   double* g = cleared_band(c);
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   const double ihx = inv_hx_, ihy = inv_hy_;
+  const bool shape_functions = fields.mass, mass_momentum = fields.mass, forces = fields.forces;
   const bool forces_from_next = forces && !mass_momentum;
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const std::uint32_t p = order_[k];
@@ -475,7 +481,7 @@ void Engine::p2g(std::size_t c, bool shape_functions, bool mass_momentum, bool f
 
 /// Sums the chunks' bands over one row of the active box, in chunk order (deterministic for any
 /// thread count).
-void Engine::reduce_row(int j, bool mass, bool momentum, bool forces) {
+void Engine::reduce_row(int j, GridFields summed) {
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
     double s[5] = {0, 0, 0, 0, 0};
@@ -486,12 +492,12 @@ void Engine::reduce_row(int j, bool mass, bool momentum, bool forces) {
                          5 * (static_cast<std::size_t>(j - chunk_row0_[c]) * box_width_ + (i - bi0_));
       for (int f = 0; f < 5; ++f) s[f] += gn[f];
     }
-    if (mass) mass_[n] = s[0];
-    if (momentum) {
+    if (summed.mass) mass_[n] = s[0];
+    if (summed.momentum) {
       momentum_[2 * n] = s[1];
       momentum_[2 * n + 1] = s[2];
     }
-    if (forces) {
+    if (summed.forces) {
       force_[2 * n] = s[3];
       force_[2 * n + 1] = s[4];
     }
@@ -565,8 +571,10 @@ void Engine::report(std::size_t c, std::size_t k, int kind, std::int64_t id, dou
 /// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
 /// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass.
 template <class Shape>
-void Engine::g2p(std::size_t c, bool strain_increments, bool remap_momentum) {
+void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   constexpr int W = Shape::kWidth;
+  const bool strain_increments = also == G2pAlso::StrainIncrements;
+  const bool remap_momentum = also == G2pAlso::RemapMomentum;
   double* g = remap_momentum ? cleared_band(c) : nullptr;
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   const double h = std::min(grid_.hx, grid_.hy);
@@ -669,14 +677,17 @@ struct MixedMaterials {
 }  // namespace
 
 
-/// Stress update: strain increment from the grid velocity at the particle, the selected checkerboard
-/// remedy, then the material's stress update and the carried state (next buffer). The nodal_strain
-/// remedy needs every chunk's increments at the nodes first, hence its barriers.
+/// Stress update: strain increment from the nodal velocity at the particle (or the one g2p stored),
+/// the selected checkerboard remedy, then the material's stress update and the carried state (next
+/// buffer). The nodal_strain remedy needs every chunk's increments at the nodes first, hence its
+/// barriers.
 template <class Shape>
-void Engine::update_stress(const double* grid_velocity, int stride, bool strain_ready) {
+void Engine::update_stress(StrainFrom from) {
+  wait_for_previous_phase();
+  const bool strain_ready = from == StrainFrom::G2p;
   if (smoothing_ == StressSmoothing::NodalStrain) {
     for_each_chunk([&](std::size_t c) {
-      if (!strain_ready) compute_strain_increments<Shape>(c, grid_velocity, stride);
+      if (!strain_ready) compute_strain_increments<Shape>(c);
       scatter_strain_increments<Shape>(c);
     });
 #pragma omp barrier
@@ -688,19 +699,18 @@ void Engine::update_stress(const double* grid_velocity, int stride, bool strain_
     });
   } else {
     for_each_chunk([&](std::size_t c) {
-      if (!strain_ready) compute_strain_increments<Shape>(c, grid_velocity, stride);
+      if (!strain_ready) compute_strain_increments<Shape>(c);
       if (smoothing_ == StressSmoothing::CellVolumetric) average_volumetric_strain_per_cell(c);
       update_material_state(c);
     });
   }
 }
 
-/// (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx), the gradient of the grid velocity at the
+/// (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx), the gradient of the nodal velocity at the
 /// particle (CB-Geo compute_strain_rate, without its 1e-15 flush to zero).
 template <class Shape>
-void Engine::compute_strain_increments(std::size_t c, const double* gv, int stride) {
+void Engine::compute_strain_increments(std::size_t c) {
   constexpr int W = Shape::kWidth;
-  const std::size_t st = static_cast<std::size_t>(stride);
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const double* wk = &weights_[k * 4 * W];
     const double* wx = wk;
@@ -710,8 +720,8 @@ void Engine::compute_strain_increments(std::size_t c, const double* gv, int stri
     double lxx = 0, lyy = 0, lxy = 0, lyx = 0;  // dvx/dx, dvy/dy, dvx/dy, dvy/dx
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      const double* v = gv + st * node_row;
-      for (int a = 0; a < W; ++a, v += st) {
+      const double* v = &velocity_[2 * node_row];
+      for (int a = 0; a < W; ++a, v += 2) {
         const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
         lxx += dx * v[0];
         lyy += dy * v[1];

@@ -43,6 +43,28 @@ enum class StressSmoothing {
 /// Parses analysis.stress_smoothing ("none" | "cell_volumetric" | "nodal_strain"); throws common::InputError otherwise.
 StressSmoothing parse_stress_smoothing(const std::string& name);
 
+/// The grid fields a p2g pass maps into the chunks' bands and a node phase sums from them.
+struct GridFields {
+  bool mass, momentum, forces;
+};
+inline constexpr GridFields kMassMomentum{true, true, false};
+inline constexpr GridFields kForces{false, false, true};
+inline constexpr GridFields kAllFields{true, true, true};
+inline constexpr GridFields kMomentum{false, true, false};
+
+/// What g2p does besides updating the particle velocity and position.
+enum class G2pAlso {
+  Nothing,
+  StrainIncrements,  ///< USL: the strain increment from the updated grid velocity, from the same nodes
+  RemapMomentum,     ///< MUSL: the updated particle momentum m N v back into the chunk's band
+};
+
+/// Where update_stress takes the strain increment from.
+enum class StrainFrom {
+  NodalVelocity,  ///< the gradient of velocity_ (momentum / mass, constraints applied) at the particle
+  G2p,            ///< the increment g2p stored (G2pAlso::StrainIncrements)
+};
+
 struct ParticleArrays {
   std::vector<std::int64_t> id;
   std::vector<std::uint32_t> material;  ///< index into Engine::materials_
@@ -69,24 +91,32 @@ class Engine {
   static constexpr std::int64_t kRemoved = -1;
 
  private:
-  // --- the phases of a step (inside one parallel region; particle phases per chunk, node phases per row)
+  // --- the phases of a step (inside one parallel region; each waits for the one before) ---
   template <class Shape>
   void run_step();
+  template <class Shape>
+  void p2g(GridFields fields);  ///< particles to the chunks' bands
+  void nodal_velocity(GridFields summed);  ///< sum the bands, nodal velocity = momentum / mass
+  void update_grid(GridFields summed);  ///< sum the bands, (nodal velocity,) integrate the grid equation
+  template <class Shape>
+  void g2p(G2pAlso also);  ///< grid to particles: velocity and position
+  template <class Shape>
+  void update_stress(StrainFrom from);  ///< strain increment, remedy, material update
+
+  // --- their parts (particle parts per chunk, node parts per row) ---
   template <class F>
   void for_each_chunk(F&& f);  ///< dynamic schedule over the chunks (no barrier at the end)
   template <class F>
   void for_each_row(F&& f);  ///< static schedule over the rows of the active node box (no barrier)
   template <class Shape>
-  void p2g(std::size_t c, bool shape_functions, bool mass_momentum, bool forces);
-  void reduce_row(int j, bool mass, bool momentum, bool forces);
+  void p2g_chunk(std::size_t c, GridFields fields);
+  void reduce_row(int j, GridFields summed);
   void nodal_velocity_row(int j);
   void integrate_row(int j);
   template <class Shape>
-  void g2p(std::size_t c, bool strain_increments, bool remap_momentum);
+  void g2p_chunk(std::size_t c, G2pAlso also);
   template <class Shape>
-  void update_stress(const double* grid_velocity, int stride, bool strain_ready);
-  template <class Shape>
-  void compute_strain_increments(std::size_t c, const double* grid_velocity, int stride);
+  void compute_strain_increments(std::size_t c);
   void average_volumetric_strain_per_cell(std::size_t c);
   template <class Shape>
   void scatter_strain_increments(std::size_t c);

@@ -3,13 +3,13 @@
 //
 // A step reads as the algorithm (Sulsky, Chen & Schreyer 1994; Bardenhagen & Kober 2004 for uGIMP;
 // USF/USL/MUSL as in CB-Geo's include/solvers/mpm_scheme/*.tcc):
-// (Engine::run_step; every p2g is followed by reduce_row, the chunk-ordered sum of the chunks' grid bands):
-//   USF : p2g(mass, momentum)  nodal_velocity  update_stress  p2g(forces)  integrate  g2p
-//   USL : p2g(mass, momentum, forces)  nodal_velocity  integrate  g2p  update_stress
-//   MUSL: p2g(mass, momentum, forces)  nodal_velocity  integrate  g2p (+ remap of the
-//         updated momentum to the nodes)  nodal_velocity  update_stress
-// integrate = Cundall damping, friction, v += a dt, velocity constraints; update_stress = strain
-// increment, checkerboard remedy, material (one templated loop per material type).
+// (Engine::run_step; every node phase first sums the chunks' grid bands in chunk order):
+//   USF : p2g(mass, momentum)  nodal_velocity  update_stress  p2g(forces)  update_grid  g2p
+//   USL : p2g(all)  update_grid  g2p (+ strain increments)  update_stress
+//   MUSL: p2g(all)  update_grid  g2p (+ remap of the updated momentum to the nodes)  nodal_velocity
+//         update_stress
+// update_grid = (nodal velocity,) Cundall damping, friction, v += a dt, velocity constraints;
+// update_stress = strain increment, checkerboard remedy, material (one templated loop per material type).
 // Particles are stored as structure-of-arrays, sorted by cell then id each step (deterministic; the
 // order depends only on the state that the snapshot records, so a resume continues bit-identically).
 //
