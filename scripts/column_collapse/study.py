@@ -496,6 +496,7 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
         ax.plot(fem["minJ_t"] / tau, fem["minJ"] / fem["minJ0"], "k-")
         ax.axhline(0, color="tab:red", lw=0.8)
         ax.axvline(1.75, ls="--", color="0.5", lw=0.8)
+        ax.set_xlim(0, max(2.5, fem["minJ_t"][-1] / tau))
         ax.text(1.78, 0.9, "paper: mesh unusable\npast t/tau_c ~ 1.75", fontsize=7)
         ax.set_xlabel("t / tau_c")
         ax.set_ylabel("min det J / det J of the undistorted element")
@@ -505,18 +506,18 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
 
     # 5. shear-stress snapshot with and without the checkerboard remedy
     if snap_runs:
-        fig, axs = plt.subplots(1, len(snap_runs), figsize=(4.2 * len(snap_runs), 3.3), sharey=True)
+        fig, axs = plt.subplots(1, len(snap_runs), figsize=(3.4 * len(snap_runs), 3.0), sharey=True)
         for ax, (title, run, t) in zip(np.atleast_1d(axs), snap_runs):
             p = particles_at(run, t)
             if p is None:
                 continue
             sel = p["coord_x"] < L0 * 1.6
             spacing = scene.cell / scene.ppd
-            sc = ax.scatter(p["coord_x"][sel], p["coord_y"][sel], c=p["tau_xy"][sel] / 1e3, s=(3.0 * spacing) ** 2,
+            sc = ax.scatter(p["coord_x"][sel], p["coord_y"][sel], c=p["tau_xy"][sel] / 1e3, s=(2.4 * spacing) ** 2,
                             marker="s", cmap="RdBu_r", vmin=-120, vmax=120, linewidths=0)
             ser = read_series(run["results"])
             ci = ser["checkerboard_index"][int(np.argmin(np.abs(ser["time"] + run["t0"] - t)))]
-            ax.set_title("%s, t = %g s\ncheckerboard index %.3f" % (title, t, ci), fontsize=8)
+            ax.set_title("%s, t = %g s\ncheckerboard index %.3f" % (title, t, ci), fontsize=7)
             ax.set_aspect("equal")
             ax.set_xlabel("x (m)")
         np.atleast_1d(axs)[0].set_ylabel("y (m)")
@@ -560,14 +561,27 @@ def sweep_scene(a, cell, ppd, area=2000.0):
     return Scene(w, h, cell, ppd, out_every=0.25)
 
 
-def lube(a):
+# 2D runout laws (L - L0)/L0 = lambda1 a (a < a1), lambda2 a^(2/3) (a > a2), as consolidated by Lagree, Staron &
+# Popinet (2011, J. Fluid Mech. 686, eq. 3.1): Lube et al. (2005, sand, rice, sugar) 1.2, 1.9, a1 = 1.8, a2 = 2.8;
+# Lajeunesse et al. (2005, glass beads, 2D channel) 1.8, 2.3, a1 = a2 = 3. Their continuum mu(I) simulations give
+# about 2.2 a up to a ~ 7.
+RUNOUT_LAWS = {"lube": (1.2, 1.9, 1.8, 2.8), "lajeunesse": (1.8, 2.3, 3.0, 3.0)}
+
+
+def runout_law(name, a):
+    l1, l2, a1, a2 = RUNOUT_LAWS[name]
     a = np.asarray(a, dtype=float)
-    return np.where(a < 1.8, 1.2 * a, 1.9 * a ** (2.0 / 3.0))
+    lin, powr = l1 * a, l2 * a ** (2.0 / 3.0)
+    mid = lin + (powr - lin) * np.clip((a - a1) / max(a2 - a1, 1e-9), 0, 1)   # straight blend across the transition
+    return np.where(a <= a1, lin, np.where(a >= a2, powr, mid))
+
+
+def lube(a):
+    return runout_law("lube", a)
 
 
 def lajeunesse(a):
-    a = np.asarray(a, dtype=float)
-    return np.where(a < 3.0, 1.2 * a, 1.9 * a ** (2.0 / 3.0))
+    return runout_law("lajeunesse", a)
 
 
 def sweep_plot(out, results):
@@ -575,11 +589,13 @@ def sweep_plot(out, results):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(5.5, 3.8))
-    a = np.linspace(0.3, 4.5, 200)
-    ax.plot(a, lube(a), "k-", lw=1, label="Lube et al. 2005: 1.2 a (a < 1.8), 1.9 a^(2/3)")
-    ax.plot(a, lajeunesse(a), "k--", lw=1, label="Lajeunesse et al. 2005 (2D channel): 1.2 a (a < 3), 1.9 a^(2/3)")
+    a = np.linspace(0.3, 4.5, 300)
+    ax.plot(a, lube(a), "k-", lw=1, label="Lube et al. 2005: 1.2 a (a < 1.8), 1.9 a^(2/3) (a > 2.8)")
+    ax.plot(a, lajeunesse(a), "k--", lw=1, label="Lajeunesse et al. 2005: 1.8 a (a < 3), 2.3 a^(2/3)")
+    ax.plot(a, 2.2 * a, ":", color="0.5", lw=1, label="continuum mu(I), Lagree et al. 2011: ~2.2 a")
     ax.plot([0.8], [1.53], "s", color="0.4", label="empirical 1.53 at a = 0.8 (Soundararajan 2015)")
-    ax.plot([r["aspect"] for r in results], [r["runout"] for r in results], "o", color="tab:blue", label="MPM only (this study)")
+    ax.plot([r["aspect"] for r in results], [r["runout"] for r in results], "o", color="tab:blue",
+            label="MPM only, Mohr-Coulomb phi 22.2 (this study)")
     ax.set_xlabel("aspect ratio a = H0/L0")
     ax.set_ylabel("final normalized runout (L - L0)/L0")
     ax.grid(alpha=0.3)
@@ -610,6 +626,14 @@ def run_sweep(bins, out, cell, ppd, jobs):
                                                                               run_r["runout"], run_r["lube"], run_r["wall"]))
             results.append(run_r)
     results.sort(key=lambda r: r["aspect"])
+    write_sweep_report(out, results)
+    return results
+
+
+def write_sweep_report(out, results):
+    """sweep.json, sweep.md (table against the laws) and aspect_sweep.png."""
+    for r in results:
+        r["lube"], r["lajeunesse"] = float(lube(r["aspect"])), float(lajeunesse(r["aspect"]))
     with open(os.path.join(out, "sweep.json"), "w") as f:
         json.dump(results, f, indent=1)
     lines = ["| a = H0/L0 | column (m) | MPM runout (L-L0)/L0 | Lube et al. 2005 | Lajeunesse et al. 2005 | H/H0 | wall (s) |",
@@ -620,7 +644,6 @@ def run_sweep(bins, out, cell, ppd, jobs):
     with open(os.path.join(out, "sweep.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     sweep_plot(out, results)
-    return results
 
 
 # ----------------------------------------------------------------------------------------------
@@ -643,6 +666,7 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (each MPM run uses one thread)")
     ap.add_argument("--sweep", action="store_true", help="also run the aspect-ratio sweep (MPM only)")
     ap.add_argument("--sweep-only", action="store_true", help="run only the aspect-ratio sweep")
+    ap.add_argument("--sweep-report", action="store_true", help="rewrite the sweep table and plot from --out/sweep.json")
     ap.add_argument("--bin", default=None, help="folder with fem_tcl, fem2mpm, mpm (default build/bin)")
     ap.add_argument("--fem-script", default=os.path.join(HERE, "column_collapse.tcl"), help="the FEM collapse script")
     ap.add_argument("--width", type=float, default=50.0, help="column width L0, m")
@@ -666,6 +690,10 @@ def main(argv=None):
     t_start = time.perf_counter()
     mode = "full" if args.full else "quick"
 
+    if args.sweep_report:
+        with open(os.path.join(out, "sweep.json")) as f:
+            write_sweep_report(out, json.load(f))
+        return 0
     if args.sweep_only:
         run_sweep(bins, out, cell, ppd, args.jobs)
         log("sweep done in %.1f s" % (time.perf_counter() - t_start))
@@ -686,9 +714,10 @@ def main(argv=None):
         else:
             f_fem = ex.submit(run_fem, bins, args.fem_script, scene, out, fem_tend)
         f_mpm = ex.submit(run_mpm_only, bins, scene, out, 1)
-        f_smooth = None
+        f_smooth = {}
         if not args.no_checkerboard:
-            f_smooth = ex.submit(run_mpm_only, bins, scene, out, 1, "mpm_smoothed", "nodal_strain", snap_t + 0.5, 0.5)
+            for remedy in ("cell_volumetric", "nodal_strain"):
+                f_smooth[remedy] = ex.submit(run_mpm_only, bins, scene, out, 1, "mpm_" + remedy, remedy, snap_t + 0.5, 0.5)
         runs["fem"] = f_fem.result()
         log("fem done: %.1f s" % runs["fem"]["wall"].get("fem", float("nan")))
         t_fem = fem_last_time(runs["fem"]["dir"])
@@ -703,7 +732,7 @@ def main(argv=None):
             runs["hyb_%g" % t] = f.result()
             log("hybrid %g s done: fem2mpm %.1f s, mpm %.1f s" % (t, runs["hyb_%g" % t]["wall"]["fem2mpm"],
                                                                 runs["hyb_%g" % t]["wall"]["mpm"]))
-        smooth = f_smooth.result() if f_smooth else None
+        smooth = {k: f.result() for k, f in f_smooth.items()}
     t_runs = time.perf_counter() - t_start
 
     # metrics
@@ -737,16 +766,16 @@ def main(argv=None):
     rows = summary_rows(series, walls, scene)
     table = summary_markdown(rows, scene, mode)
     snaps = [("MPM only, no smoothing", runs["mpm"], snap_t)]
-    if smooth:
-        snaps.append(("MPM only, nodal_strain smoothing", smooth, snap_t))
+    for remedy, run in smooth.items():
+        snaps.append(("MPM only, %s smoothing" % remedy, run, snap_t))
     if not args.no_figures:
         hyb1 = runs.get("hyb_1")
         figures(out, scene, series, fem_prof, hyb1, snaps)
     for name, r in runs.items():
         if "results" in r:
             prune_particle_files(r, (1.0, 3.0, 5.0, snap_t))
-    if smooth:
-        prune_particle_files(smooth, (snap_t,))
+    for run in smooth.values():
+        prune_particle_files(run, (snap_t,))
     t_all = time.perf_counter() - t_start
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("Study (%s): %g x %g m column, %g m cells, %d x %d particles per cell; runs %.1f s, total %.1f s "
