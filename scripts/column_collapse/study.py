@@ -662,7 +662,7 @@ def find_bins(bin_dir):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--full", action="store_true", help="the paper's resolution: 1 m elements and cells, 4 x 4 particles per cell")
-    ap.add_argument("--out", default=None, help="output folder (default study_quick/ or study_full/ in the current folder)")
+    ap.add_argument("--out", default=None, help="output folder (default results/study_quick or results/study_full in the repository)")
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (each MPM run uses one thread)")
     ap.add_argument("--sweep", action="store_true", help="also run the aspect-ratio sweep (MPM only)")
     ap.add_argument("--sweep-only", action="store_true", help="run only the aspect-ratio sweep")
@@ -684,7 +684,7 @@ def main(argv=None):
 
     cell = args.cell or (1.0 if args.full else 2.0)
     ppd = args.ppd or (4 if args.full else 2)
-    out = os.path.abspath(args.out or ("study_full" if args.full else "study_quick"))
+    out = os.path.abspath(args.out or os.path.join(REPO, "results", "study_full" if args.full else "study_quick"))
     os.makedirs(out, exist_ok=True)
     bins = find_bins(args.bin)
     t_start = time.perf_counter()
@@ -726,12 +726,22 @@ def main(argv=None):
             log("hybrid %g s skipped: the FEM run ended at t = %g s (mesh inverted or not converged)" % (t, t_fem))
         transfers = [t for t in transfers if t not in skipped]
         f_h = {t: ex.submit(run_hybrid, bins, scene, out, runs["fem"]["dir"], t, 1) for t in transfers}
-        runs["mpm"] = f_mpm.result()
-        log("mpm only done: %.1f s" % runs["mpm"]["wall"]["mpm"])
+        failed = {}
+        try:
+            runs["mpm"] = f_mpm.result()
+            log("mpm only done: %.1f s" % runs["mpm"]["wall"]["mpm"])
+        except RuntimeError as e:
+            failed["mpm"] = str(e)
         for t, f in f_h.items():
-            runs["hyb_%g" % t] = f.result()
-            log("hybrid %g s done: fem2mpm %.1f s, mpm %.1f s" % (t, runs["hyb_%g" % t]["wall"]["fem2mpm"],
-                                                                runs["hyb_%g" % t]["wall"]["mpm"]))
+            try:
+                runs["hyb_%g" % t] = f.result()
+                log("hybrid %g s done: fem2mpm %.1f s, mpm %.1f s" % (t, runs["hyb_%g" % t]["wall"]["fem2mpm"],
+                                                                    runs["hyb_%g" % t]["wall"]["mpm"]))
+            except RuntimeError as e:
+                failed["hyb_%g" % t] = str(e)
+        for name, msg in failed.items():
+            log("study.py: %s FAILED (left out of the figures): %s" % (name, msg))
+        transfers = [t for t in transfers if "hyb_%g" % t in runs]
         smooth = {k: f.result() for k, f in f_smooth.items()}
     t_runs = time.perf_counter() - t_start
 
@@ -741,9 +751,10 @@ def main(argv=None):
     pe0_fem = fem_s["PE"][0]
     fem_s["PE0"] = pe0_fem
     series["fem"] = fem_s
-    s = mpm_run_series(runs["mpm"])
-    s["PE0"] = s["PE"][0] if runs["mpm"]["t0"] > 0 else RHO * G * scene.width * scene.height ** 2 / 2.0
-    series["mpm"] = s
+    if "mpm" in runs:
+        s = mpm_run_series(runs["mpm"])
+        s["PE0"] = RHO * G * scene.width * scene.height ** 2 / 2.0
+        series["mpm"] = s
     for t in transfers:
         s = mpm_run_series(runs["hyb_%g" % t])
         s["PE0"] = pe0_fem
@@ -765,7 +776,7 @@ def main(argv=None):
     walls = {name: r["wall"] for name, r in runs.items()}
     rows = summary_rows(series, walls, scene)
     table = summary_markdown(rows, scene, mode)
-    snaps = [("MPM only, no smoothing", runs["mpm"], snap_t)]
+    snaps = [("MPM only, no smoothing", runs["mpm"], snap_t)] if "mpm" in runs else []
     for remedy, run in smooth.items():
         snaps.append(("MPM only, %s smoothing" % remedy, run, snap_t))
     if not args.no_figures:
@@ -786,10 +797,14 @@ def main(argv=None):
                    "tau_c": scene.tau_c, "base_friction": BASE_MU, "wall_runs": t_runs, "wall_total": t_all,
                    "jobs": args.jobs, "rows": rows}, f, indent=1, default=float)
     log(table)
+    if failed:
+        with open(os.path.join(out, "summary.md"), "a") as f:
+            for name, msg in failed.items():
+                f.write("\n%s FAILED: %s\n" % (name, msg.splitlines()[0]))
     if args.sweep:
         run_sweep(bins, out, cell, ppd, args.jobs)
     log("study done: %.1f s wall (runs %.1f s)" % (time.perf_counter() - t_start, t_runs))
-    return 0
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":
