@@ -35,10 +35,11 @@ Eigen::Matrix3d principal_elasticity(const IsotropicElasticity& el) {
 
 bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& st);
 
-Planes make_planes(const IsotropicElasticity& el, const MohrCoulombStrength& st) {
+Planes make_planes(const IsotropicElasticity& el, const MohrCoulombSurface& surface) {
   Planes p;
   const Eigen::Matrix3d d = principal_elasticity(el);
-  const double sf = std::sin(st.friction), cf = std::cos(st.friction), sd = std::sin(st.dilation);
+  const MohrCoulombStrength& st = surface.strength;
+  const double sf = surface.sin_phi, cf = surface.cos_phi, sd = surface.sin_psi;
   const double r_shear = 2.0 * st.cohesion * cf;
   p.m[kMain] = {1.0 + sf, 0.0, -(1.0 - sf)};
   p.m[kTC] = {0.0, 1.0 + sf, -(1.0 - sf)};
@@ -256,12 +257,20 @@ PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStra
           stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
 }
 
+MohrCoulombSurface::MohrCoulombSurface(const MohrCoulombStrength& st)
+    : strength(st), sin_phi(std::sin(st.friction)), cos_phi(std::cos(st.friction)), sin_psi(std::sin(st.dilation)) {}
+
 MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const IsotropicElasticity& el,
                                       const MohrCoulombStrength& st) {
+  return mohr_coulomb_return(trial, el, MohrCoulombSurface(st));
+}
+
+MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const IsotropicElasticity& el,
+                                      const MohrCoulombSurface& surface) {
   const Spectral sp = decompose(trial);
-  if (inside(sp.sorted, std::sin(st.friction), std::cos(st.friction), st))
+  if (inside(sp.sorted, surface.sin_phi, surface.cos_phi, surface.strength))
     return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
-  const Planes planes = make_planes(el, st);
+  const Planes planes = make_planes(el, surface);
   const PrincipalResult pr = principal_return(planes, sp.sorted, el.shear_modulus);
   MohrCoulombUpdate up;
   up.stress = recompose(sp, pr.stress);
@@ -277,7 +286,12 @@ MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const Isot
 
 MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
                                       const IsotropicElasticity& el, const MohrCoulombStrength& st) {
-  return mohr_coulomb_return(elastic_trial(stress, dstrain, el), el, st);
+  return mohr_coulomb_return(elastic_trial(stress, dstrain, el), el, MohrCoulombSurface(st));
+}
+
+MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                      const IsotropicElasticity& el, const MohrCoulombSurface& surface) {
+  return mohr_coulomb_return(elastic_trial(stress, dstrain, el), el, surface);
 }
 
 Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& trial, const IsotropicElasticity& el,
@@ -290,8 +304,9 @@ Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& tr
       lambda, lambda, 0.0,             //
       0.0, 0.0, g;
   const Spectral sp = decompose(trial);
-  if (inside(sp.sorted, std::sin(st.friction), std::cos(st.friction), st)) return d;
-  const Planes planes = make_planes(el, st);
+  const MohrCoulombSurface surface(st);
+  if (inside(sp.sorted, surface.sin_phi, surface.cos_phi, st)) return d;
+  const Planes planes = make_planes(el, surface);
   const PrincipalResult pr = principal_return(planes, sp.sorted, g);
 
   // Principal algorithmic tangent ds/ds_trial = I - D N A^-1 M^T over the active planes ([SPO] sec. 8.2);

@@ -47,6 +47,17 @@ struct MohrCoulombStrength {
                           ///< Values at or above the apex c cot(phi) are clamped there (= no cutoff).
 };
 
+/// A MohrCoulombStrength with the trigonometry of its angles evaluated once: callers whose strength
+/// changes rarely (per material, or per softening update) build it once and pass it to every update,
+/// instead of paying sin / cos of phi and psi on every call. The overloads taking a strength build one.
+struct MohrCoulombSurface {
+  MohrCoulombStrength strength{};
+  double sin_phi = 0.0, cos_phi = 1.0;  ///< of strength.friction
+  double sin_psi = 0.0;                 ///< of strength.dilation
+  MohrCoulombSurface() = default;
+  explicit MohrCoulombSurface(const MohrCoulombStrength& st);
+};
+
 /// Where the return mapping ended (the active yield planes).
 enum class ReturnRegion : std::uint8_t {
   Elastic,                  ///< trial state admissible: returned bit for bit
@@ -77,10 +88,14 @@ PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStra
 /// unchanged, bit for bit, with region Elastic and a zero plastic strain increment.
 MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
                                       const IsotropicElasticity& elasticity, const MohrCoulombStrength& strength);
+MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                      const IsotropicElasticity& elasticity, const MohrCoulombSurface& surface);
 
 /// The same return, starting from an elastic trial stress (for callers that build the trial themselves).
 MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, const IsotropicElasticity& elasticity,
                                       const MohrCoulombStrength& strength);
+MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, const IsotropicElasticity& elasticity,
+                                      const MohrCoulombSurface& surface);
 
 /// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress
 /// ([SPO] sec. 8.2 in principal space, mapped back with the spin term of [SPO] Appendix A).

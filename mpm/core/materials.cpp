@@ -28,6 +28,9 @@ MohrCoulomb MohrCoulomb::from(const io::MaterialSpec& spec) {
   m.pdstrain_residual = spec.residual_pdstrain;
   m.tension_cutoff = spec.tension_cutoff;
   m.softening = spec.softening;
+  m.peak_surface = constitutive::MohrCoulombSurface({m.phi_peak, m.psi_peak, m.c_peak, m.tension_cutoff});
+  m.residual_surface =
+      constitutive::MohrCoulombSurface({m.phi_residual, m.psi_residual, m.c_residual, m.tension_cutoff});
   return m;
 }
 
@@ -56,9 +59,21 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
   }
   const constitutive::PlaneStrainStress s = Eigen::Map<const Eigen::Vector4d>(stress);
   const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
-  const constitutive::MohrCoulombUpdate r = constitutive::mohr_coulomb_update(
-      s, de, constitutive::IsotropicElasticity{bulk, shear},
-      constitutive::MohrCoulombStrength{svars[0], svars[1], svars[2], tension_cutoff});
+  const constitutive::MohrCoulombStrength strength{svars[0], svars[1], svars[2], tension_cutoff};
+  const auto has_angles_of = [&](const constitutive::MohrCoulombSurface& cached) {
+    return strength.friction == cached.strength.friction && strength.dilation == cached.strength.dilation;
+  };
+  constitutive::MohrCoulombSurface surface;
+  if (has_angles_of(peak_surface)) {
+    surface = peak_surface;
+  } else if (has_angles_of(residual_surface)) {
+    surface = residual_surface;
+  } else {
+    surface = constitutive::MohrCoulombSurface(strength);
+  }
+  surface.strength = strength;  // the trigonometry depends on the angles only
+  const constitutive::MohrCoulombUpdate r =
+      constitutive::mohr_coulomb_update(s, de, constitutive::IsotropicElasticity{bulk, shear}, surface);
   Eigen::Map<Eigen::Vector4d> out(stress);
   out = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them

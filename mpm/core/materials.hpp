@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 
+#include "constitutive/mohr_coulomb.hpp"
 #include "mpm/io/deck.hpp"
 
 namespace mpm::core {
@@ -45,6 +46,10 @@ struct MohrCoulomb {
   double pdstrain_peak = 0, pdstrain_residual = 0;
   double tension_cutoff = 0;
   bool softening = false;
+  /// The peak and residual strengths with their sin / cos evaluated once (from()); update() uses them
+  /// when the particle's (phi, psi, c) equal one of them, and evaluates its own only inside the
+  /// softening range (or for other angles read from a resume file).
+  constitutive::MohrCoulombSurface peak_surface, residual_surface;
   static constexpr std::size_t kStateCount = 7;
   static MohrCoulomb from(const io::MaterialSpec& spec);
   void initial_state(double* svars) const;

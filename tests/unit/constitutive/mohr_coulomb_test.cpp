@@ -1,6 +1,7 @@
 // Unit tests of the plane-strain Mohr-Coulomb return mapping (constitutive/mohr_coulomb.hpp):
 // every region (face, both edges, apex, tension cutoff and its corners), the flow rule, admissibility,
-// bit-identical elastic states, c = 0 / tiny c, and the consistent tangent against central differences.
+// bit-identical elastic states, c = 0 / tiny c, the consistent tangent against central differences, and
+// the update with precomputed trigonometry (MohrCoulombSurface) equal bit for bit to the plain one.
 #include "constitutive/mohr_coulomb.hpp"
 
 #include <gtest/gtest.h>
@@ -257,6 +258,23 @@ TEST_P(MohrCoulombTangent, MatchesCentralDifferences) {
   const Eigen::Matrix3d t3 = constitutive::mohr_coulomb_tangent(tc.trial, kElastic, tc.st);
   EXPECT_EQ(t3(2, 2), t(3, 2));
   EXPECT_EQ(t3(1, 0), t(1, 0));
+}
+
+// A precomputed MohrCoulombSurface only saves the sin / cos evaluations: the update must be bit for bit
+// the one from the strength, in every region.
+TEST_P(MohrCoulombTangent, PrecomputedSurfaceGivesTheSameUpdateBitForBit) {
+  const TangentCase& tc = GetParam();
+  const constitutive::MohrCoulombSurface surface(tc.st);
+  const PlaneStrainStrain de(1e-5, -2e-5, 3e-5);
+  const auto a = constitutive::mohr_coulomb_update(tc.trial, de, kElastic, tc.st);
+  const auto b = constitutive::mohr_coulomb_update(tc.trial, de, kElastic, surface);
+  EXPECT_EQ(a.region, b.region);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(a.stress[i], b.stress[i]) << i;
+    EXPECT_EQ(a.plastic_strain_increment[i], b.plastic_strain_increment[i]) << i;
+  }
+  const auto r = constitutive::mohr_coulomb_return(tc.trial, kElastic, surface);
+  EXPECT_EQ(r.region, tc.region);
 }
 
 INSTANTIATE_TEST_SUITE_P(
