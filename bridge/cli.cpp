@@ -18,6 +18,7 @@
 #include "bridge/transfer_report.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace bridge {
 namespace {
@@ -48,11 +49,7 @@ Wall parse_wall(const std::string& s, const char* option) {
   throw common::InputError(option, "expected roller, fixed or none, got '" + s + "'");
 }
 
-std::string fmt(double v, int precision = 6) {
-  std::ostringstream os;
-  os << std::setprecision(precision) << v;
-  return os.str();
-}
+std::string fmt(double v, int precision = 6) { return common::number_text(v, precision); }
 
 std::string relative_change(double before, double after) {
   if (before == 0) return after == 0 ? "0" : "n/a";

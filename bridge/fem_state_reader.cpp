@@ -8,16 +8,13 @@
 
 #include "bridge/recorder_file.hpp"
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace bridge {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(9);
-  os << v;
-  return os.str();
-}
+/// A number quoted in a note or warning (9 significant digits).
+std::string fmt(double v) { return common::number_text(v, 9); }
 
 std::string tag_range_text(const std::vector<long>& tags) {
   if (tags.empty()) return "none";

@@ -7,11 +7,26 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace bridge {
 namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+/// Calls token(begin, end) for each blank-separated token of the characters [from, to) of `data`.
+template <class F>
+void for_each_token(const char* data, std::size_t from, std::size_t to, F&& token) {
+  std::size_t i = from;
+  while (i < to) {
+    while (i < to && is_space(data[i])) ++i;
+    if (i >= to) break;
+    std::size_t j = i;
+    while (j < to && !is_space(data[j])) ++j;
+    token(data + i, data + j);
+    i = j;
+  }
+}
 
 /// Parses one number token [begin, end); false when it is not a whole number.
 bool parse_token(const char* begin, const char* end, double& value) {
@@ -34,12 +49,8 @@ int significant_digits(const char* begin, const char* end) {
   return std::max(digits, 1);
 }
 
-std::string format_time(double t) {
-  std::ostringstream os;
-  os.precision(9);
-  os << t;
-  return os.str();
-}
+/// A time quoted in an error message (9 significant digits).
+std::string time_text(double t) { return common::number_text(t, 9); }
 
 }  // namespace
 
@@ -65,25 +76,19 @@ RecorderFile::RecorderFile(std::filesystem::path file, bool has_time_column)
     row.offset = pos;
     row.length = eol - pos;
     // Count and check tokens; parse the first one as the time.
-    std::size_t i = pos;
     int digits = 6;
-    while (i < eol) {
-      while (i < eol && is_space(data[i])) ++i;
-      if (i >= eol) break;
-      std::size_t j = i;
-      while (j < eol && !is_space(data[j])) ++j;
+    for_each_token(data, pos, eol, [&](const char* begin, const char* end) {
       double v = 0;
-      if (!parse_token(data + i, data + j, v))
+      if (!parse_token(begin, end, v))
         throw common::InputError(path_.string() + ":" + std::to_string(line),
-                                 "expected a number, got '" + std::string(data + i, data + j) + "'" +
+                                 "expected a number, got '" + std::string(begin, end) + "'" +
                                      (terminated ? "" : " (the file looks truncated)"));
       if (row.width == 0) {
         row.time = v;
-        digits = significant_digits(data + i, data + j);
+        digits = significant_digits(begin, end);
       }
       ++row.width;
-      i = j;
-    }
+    });
     pos = terminated ? eol + 1 : size;
     if (row.width == 0) {
       if (terminated && pos < size)
@@ -127,12 +132,12 @@ std::size_t RecorderFile::find_time(double t, std::vector<int>* ambiguous) const
     if (tr > t && (!above || tr < rows_[*above].time)) above = r;
   }
   std::string nearest;
-  if (below) nearest += format_time(rows_[*below].time) + " (line " + std::to_string(rows_[*below].line) + ")";
-  if (above) nearest += std::string(nearest.empty() ? "" : ", ") + format_time(rows_[*above].time) + " (line " +
+  if (below) nearest += time_text(rows_[*below].time) + " (line " + std::to_string(rows_[*below].line) + ")";
+  if (above) nearest += std::string(nearest.empty() ? "" : ", ") + time_text(rows_[*above].time) + " (line " +
                         std::to_string(rows_[*above].line) + ")";
-  throw common::InputError(path_.string(), "no row at time " + format_time(t) + "; nearest times: " + nearest + "; " +
+  throw common::InputError(path_.string(), "no row at time " + time_text(t) + "; nearest times: " + nearest + "; " +
                                                std::to_string(rows_.size()) + " rows from t = " +
-                                               format_time(rows_.front().time) + " to " + format_time(rows_.back().time));
+                                               time_text(rows_.front().time) + " to " + time_text(rows_.back().time));
 }
 
 std::size_t RecorderFile::find_row(long n) const {
@@ -148,21 +153,13 @@ std::vector<double> RecorderFile::values(std::size_t index) const {
   const Row& row = rows_.at(index);
   std::vector<double> out;
   out.reserve(row.width);
-  const char* data = text_.data();
-  std::size_t i = row.offset;
-  const std::size_t end = row.offset + row.length;
   bool skip = has_time_;
-  while (i < end) {
-    while (i < end && is_space(data[i])) ++i;
-    if (i >= end) break;
-    std::size_t j = i;
-    while (j < end && !is_space(data[j])) ++j;
+  for_each_token(text_.data(), row.offset, row.offset + row.length, [&](const char* begin, const char* end) {
     double v = 0;
-    parse_token(data + i, data + j, v);  // checked while indexing
+    parse_token(begin, end, v);  // checked while indexing
     if (!skip) out.push_back(v);
     skip = false;
-    i = j;
-  }
+  });
   return out;
 }
 

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/mpm/mpm_test_decks.hpp"
+#include "support/mpm_test_decks.hpp"
 
 namespace {
 

@@ -20,6 +20,29 @@ long long header_count(const std::string& shown, const TextLine& line, std::size
   return n;
 }
 
+/// The data lines of a file whose first line is the count of the lines that follow (CB-Geo's particle
+/// and stress files): checks the header and the count, returns the lines with the header first.
+std::vector<TextLine> read_counted_lines(const std::filesystem::path& file, const std::string& shown,
+                                         const std::string& counted, const std::string& found_suffix) {
+  auto lines = read_data_lines(file, shown);
+  if (lines.empty()) throw common::InputError(shown, "empty file (expected the particle count on the first line)");
+  if (lines.front().words.size() != 1)
+    throw common::InputError(at_line(shown, lines.front().number), "expected the particle count (1 integer)");
+  const long long n = header_count(shown, lines.front(), 0, "particle count");
+  if (static_cast<long long>(lines.size()) - 1 != n)
+    throw common::InputError(shown, "header says " + std::to_string(n) + " " + counted + ", found " +
+                                        std::to_string(lines.size() - 1) + found_suffix);
+  return lines;
+}
+
+/// The word-th word of a data line, or an error naming the line when it has fewer words.
+const std::string& word_of(const std::string& shown, const TextLine& line, std::size_t word) {
+  if (word >= line.words.size())
+    throw common::InputError(at_line(shown, line.number), "expected at least " + std::to_string(word + 1) +
+                                                             " numbers, got " + std::to_string(line.words.size()));
+  return line.words[word];
+}
+
 }  // namespace
 
 std::vector<TextLine> read_data_lines(const std::filesystem::path& file, const std::string& shown) {
@@ -40,10 +63,7 @@ std::vector<TextLine> read_data_lines(const std::filesystem::path& file, const s
 }
 
 double parse_double(const std::string& shown, const TextLine& line, std::size_t word) {
-  if (word >= line.words.size())
-    throw common::InputError(at_line(shown, line.number), "expected at least " + std::to_string(word + 1) +
-                                                             " numbers, got " + std::to_string(line.words.size()));
-  const std::string& w = line.words[word];
+  const std::string& w = word_of(shown, line, word);
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(w.c_str(), &end);
@@ -53,10 +73,7 @@ double parse_double(const std::string& shown, const TextLine& line, std::size_t 
 }
 
 long long parse_integer(const std::string& shown, const TextLine& line, std::size_t word) {
-  if (word >= line.words.size())
-    throw common::InputError(at_line(shown, line.number), "expected at least " + std::to_string(word + 1) +
-                                                             " numbers, got " + std::to_string(line.words.size()));
-  const std::string& w = line.words[word];
+  const std::string& w = word_of(shown, line, word);
   errno = 0;
   char* end = nullptr;
   const long long v = std::strtoll(w.c_str(), &end, 10);
@@ -112,16 +129,9 @@ MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& sh
 }
 
 std::vector<Eigen::Vector2d> read_particle_coordinates(const std::filesystem::path& file, const std::string& shown) {
-  const auto lines = read_data_lines(file, shown);
-  if (lines.empty()) throw common::InputError(shown, "empty file (expected the particle count on the first line)");
-  if (lines.front().words.size() != 1)
-    throw common::InputError(at_line(shown, lines.front().number), "expected the particle count (1 integer)");
-  const long long n = header_count(shown, lines.front(), 0, "particle count");
-  if (static_cast<long long>(lines.size()) - 1 != n)
-    throw common::InputError(shown, "header says " + std::to_string(n) + " particles, found " +
-                                        std::to_string(lines.size() - 1) + " coordinate lines");
+  const auto lines = read_counted_lines(file, shown, "particles", " coordinate lines");
   std::vector<Eigen::Vector2d> xs;
-  xs.reserve(n);
+  xs.reserve(lines.size() - 1);
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const TextLine& l = lines[k];
     if (l.words.size() != 2 && l.words.size() != 3)
@@ -135,16 +145,9 @@ std::vector<Eigen::Vector2d> read_particle_coordinates(const std::filesystem::pa
 }
 
 std::vector<std::array<double, 6>> read_particle_stresses(const std::filesystem::path& file, const std::string& shown) {
-  const auto lines = read_data_lines(file, shown);
-  if (lines.empty()) throw common::InputError(shown, "empty file (expected the particle count on the first line)");
-  if (lines.front().words.size() != 1)
-    throw common::InputError(at_line(shown, lines.front().number), "expected the particle count (1 integer)");
-  const long long n = header_count(shown, lines.front(), 0, "particle count");
-  if (static_cast<long long>(lines.size()) - 1 != n)
-    throw common::InputError(shown, "header says " + std::to_string(n) + " stress lines, found " +
-                                        std::to_string(lines.size() - 1));
+  const auto lines = read_counted_lines(file, shown, "stress lines", "");
   std::vector<std::array<double, 6>> out;
-  out.reserve(n);
+  out.reserve(lines.size() - 1);
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const TextLine& l = lines[k];
     if (l.words.size() != 6)

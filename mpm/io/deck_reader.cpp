@@ -8,9 +8,9 @@
 #include <numbers>
 #include <optional>
 #include <set>
-#include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 #include "mpm/io/ascii_files.hpp"
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
@@ -26,12 +26,8 @@ const std::vector<std::string>& stress_smoothing_methods() {
 
 namespace {
 
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
+/// A number quoted in an input error (10 significant digits).
+std::string num(double v) { return common::number_text(v, 10); }
 
 json parse_json_file(const fs::path& file, const std::string& shown) {
   std::ifstream in(file);

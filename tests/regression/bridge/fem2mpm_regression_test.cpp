@@ -19,6 +19,7 @@
 #include "bridge/particle_mapping.hpp"
 #include "bridge/stress_recovery.hpp"
 #include "mpm/io/particle_table.hpp"
+#include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -32,12 +33,7 @@ struct Result {
   std::string out, err;
 };
 
-fs::path scratch_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("bridge_regression_" + std::to_string(::getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+fs::path scratch_dir(const std::string& name) { return test_support::fresh_scratch_folder("bridge_regression", name); }
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);

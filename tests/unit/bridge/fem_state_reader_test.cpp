@@ -7,6 +7,7 @@
 #include "bridge/fem_state_reader.hpp"
 #include "bridge/recorder_file.hpp"
 #include "common/input_error.hpp"
+#include "support/input_error_message.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -22,14 +23,7 @@ bridge::ReadOptions reference_options() {
   return o;
 }
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const common::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test_support::input_error_message;
 
 TEST(FemStateReader, AssemblesReferenceRunInSI) {
   const auto model = bridge::read_fem_model(kCase / "model.json");
@@ -77,13 +71,13 @@ TEST(FemStateReader, RowWidthDisagreeingWithLayoutNamesFileAndLine) {
   const auto model = bridge::read_fem_model(kCase / "model.json");
   auto o = reference_options();
   o.nodes = bridge::parse_tag_list("1-34", "--nodes");
-  std::string msg = message_of([&] { bridge::read_fem_state(model, o); });
+  std::string msg = input_error_message([&] { bridge::read_fem_state(model, o); });
   EXPECT_NE(msg.find("disp.out:5"), std::string::npos) << msg;
   EXPECT_NE(msg.find("35 nodes x 2 dofs"), std::string::npos) << msg;
   EXPECT_NE(msg.find("34 nodes"), std::string::npos) << msg;
   o = reference_options();
   o.elements = bridge::parse_tag_list("1-23", "--elements");
-  msg = message_of([&] { bridge::read_fem_state(model, o); });
+  msg = input_error_message([&] { bridge::read_fem_state(model, o); });
   EXPECT_NE(msg.find("stress.out:5"), std::string::npos) << msg;
   EXPECT_NE(msg.find("23 elements"), std::string::npos) << msg;
 }
@@ -101,7 +95,7 @@ TEST(FemStateReader, MaterialOverridesAndMohrCoulomb) {
   EXPECT_CLOSE(m.friction, 30 * M_PI / 180, 0, 1e-15);
   EXPECT_CLOSE(m.tension_cutoff, 5000 / std::tan(30 * M_PI / 180), 0, 1e-12);  // apex
   o.material.cohesion.reset();
-  const std::string msg = message_of([&] { bridge::read_fem_state(model, o); });
+  const std::string msg = input_error_message([&] { bridge::read_fem_state(model, o); });
   EXPECT_NE(msg.find("--cohesion"), std::string::npos) << msg;
 }
 

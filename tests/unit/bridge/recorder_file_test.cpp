@@ -5,6 +5,8 @@
 
 #include "bridge/recorder_file.hpp"
 #include "common/input_error.hpp"
+#include "support/input_error_message.hpp"
+#include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -12,20 +14,12 @@ namespace {
 const std::filesystem::path kCase =
     std::filesystem::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/sspquad_block_surface_load/ref";
 
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const common::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test_support::input_error_message;
 
 std::filesystem::path scratch(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / ("bridge_unit_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / name, std::ios::binary) << text;
-  return dir / name;
+  const auto file = test_support::scratch_folder("bridge_unit") / name;
+  std::ofstream(file, std::ios::binary) << text;
+  return file;
 }
 
 TEST(RecorderFile, IndexesOpenSeesDispFile) {
@@ -50,11 +44,11 @@ TEST(RecorderFile, IndexesOpenSeesDispFile) {
 
 TEST(RecorderFile, TimeNotInFileListsNearestTimes) {
   const bridge::RecorderFile f(kCase / "stress.out");
-  const std::string msg = message_of([&] { f.find_time(0.7); });
+  const std::string msg = input_error_message([&] { f.find_time(0.7); });
   EXPECT_NE(msg.find("stress.out"), std::string::npos) << msg;
   EXPECT_NE(msg.find("0.6 (line 3)"), std::string::npos) << msg;
   EXPECT_NE(msg.find("0.8 (line 4)"), std::string::npos) << msg;
-  EXPECT_FALSE(message_of([&] { f.find_row(6); }).empty());
+  EXPECT_FALSE(input_error_message([&] { f.find_row(6); }).empty());
 }
 
 TEST(RecorderFile, DuplicateTimesTakeTheLastRow) {
@@ -70,16 +64,16 @@ TEST(RecorderFile, TruncatedAndBadFilesNameFileAndLine) {
   std::ifstream in(kCase / "disp.out");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto cut = scratch("cut.out", text.substr(0, text.size() - 200));  // last row cut mid-way
-  std::string msg = message_of([&] { bridge::RecorderFile f(cut); });
+  std::string msg = input_error_message([&] { bridge::RecorderFile f(cut); });
   EXPECT_NE(msg.find("cut.out:5"), std::string::npos) << msg;
   EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
   const auto bad = scratch("bad.out", "0.1 1 2\n0.2 1 x\n");
-  msg = message_of([&] { bridge::RecorderFile f(bad); });
+  msg = input_error_message([&] { bridge::RecorderFile f(bad); });
   EXPECT_NE(msg.find("bad.out:2"), std::string::npos) << msg;
   EXPECT_NE(msg.find("'x'"), std::string::npos) << msg;
-  msg = message_of([&] { bridge::RecorderFile f(scratch("empty.out", "")); });
+  msg = input_error_message([&] { bridge::RecorderFile f(scratch("empty.out", "")); });
   EXPECT_NE(msg.find("empty"), std::string::npos) << msg;
-  msg = message_of([&] { bridge::RecorderFile f("/nonexistent/disp.out"); });
+  msg = input_error_message([&] { bridge::RecorderFile f("/nonexistent/disp.out"); });
   EXPECT_NE(msg.find("/nonexistent/disp.out"), std::string::npos) << msg;
 }
 

@@ -8,7 +8,7 @@
 #include "common/input_error.hpp"
 #include "mpm/core/simulation.hpp"
 #include "support/tolerance.hpp"
-#include "verification/mpm/mpm_test_decks.hpp"
+#include "support/mpm_test_decks.hpp"
 
 namespace {
 
@@ -18,21 +18,9 @@ using mpm::io::ParticleRecord;
 
 /// A small Mohr-Coulomb column that collapses (K0 stresses, rough base, roller wall).
 Deck collapsing_column(mpm::io::Scheme scheme, CellType type, const std::string& smoothing = "none") {
-  Deck deck;
-  deck.grid = make_grid(0, 0, 0.5, 16, 8, type);
-  deck.materials.push_back(mohr_coulomb(3, 1800, 5e6, 0.3, 30, 200, 0));
-  fill_block(deck, 0, 2, 0, 3, 2, 3);
-  for (auto& p : deck.particles) {
-    p.stress_yy = -1800 * 9.81 * (3 - p.coord_y);
-    p.stress_xx = p.stress_zz = 0.5 * p.stress_yy;
-  }
-  const auto& g = deck.grid;
-  deck.velocity_constraints.push_back({nodes_where(g, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
-  const auto base = nodes_where(g, [](double, double y) { return y <= 1e-9; });
-  deck.velocity_constraints.push_back({base, 1, 0.0});
-  deck.friction_constraints.push_back({base, 1, -1, 0.4});
+  Deck deck = mpm_test::collapsing_column(make_grid(0, 0, 0.5, 16, 8, type), mohr_coulomb(3, 1800, 5e6, 0.3, 30, 200, 0),
+                                          2, 3, 2, 0.4);
   deck.analysis.scheme = scheme;
-  deck.analysis.gravity = {0, -9.81};
   deck.analysis.cfl = 0.5;
   deck.analysis.dt = 1.0;
   deck.analysis.stress_smoothing = smoothing;

@@ -12,6 +12,7 @@
 
 #include "common/input_error.hpp"
 #include "mpm/io/deck_reader.hpp"
+#include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
 namespace fs = std::filesystem;
@@ -24,9 +25,7 @@ namespace {
 class SmallDeck {
  public:
   explicit SmallDeck(const std::string& name) {
-    dir = fs::temp_directory_path() / ("geoflow_deck_reader_" + std::to_string(::getpid())) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    dir = test_support::fresh_scratch_folder("geoflow_deck_reader", name);
     std::ofstream mesh(dir / "mesh.txt");
     mesh << "# nodes and cells\n20 12\n";
     for (int j = 0; j < 4; ++j)

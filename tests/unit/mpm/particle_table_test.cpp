@@ -8,16 +8,13 @@
 
 #include "common/input_error.hpp"
 #include "mpm/io/particle_table.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 using mpm::io::ParticleRecord;
 
 namespace {
-fs::path scratch(const std::string& name) {
-  auto dir = fs::temp_directory_path() / ("geoflow_particle_table_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return test_support::scratch_folder("geoflow_particle_table") / name; }
 }  // namespace
 
 TEST(ParticleTable, RoundTripKeepsEveryMember) {

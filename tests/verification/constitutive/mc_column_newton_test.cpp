@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -25,9 +26,7 @@ namespace fs = std::filesystem;
 TEST(MohrCoulombColumn, StageSwitchAndQuadraticNewtonConvergence) {
   const fs::path script = fs::path(GEOFLOW_SOURCE_DIR) / "tests/verification/constitutive/data/mc_column_stage_switch.tcl";
   // A scratch folder of this process under the system temp folder (removed when the test passes).
-  const fs::path run = fs::temp_directory_path() / ("geoflow_mc_column_newton_" + std::to_string(::getpid()));
-  fs::remove_all(run);
-  fs::create_directories(run);
+  const fs::path run = test_support::fresh_scratch_folder("geoflow_mc_column_newton", "run");
   const std::string cmd = "cd \"" + run.string() + "\" && \"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() +
                           "\" \"" + script.string() + "\" > out.txt 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << (run / "out.txt");
@@ -77,7 +76,7 @@ TEST(MohrCoulombColumn, StageSwitchAndQuadraticNewtonConvergence) {
   // Every step whose history reaches the asymptotic range shows order ~2 (a step that converges in two or three
   // iterations has no triple to estimate from; all 20 do here).
   EXPECT_GE(quadratic_steps, 18);
-  if (!::testing::Test::HasFailure()) fs::remove_all(run);
+  if (!::testing::Test::HasFailure()) fs::remove_all(run.parent_path());
 }
 
 }  // namespace

@@ -12,30 +12,17 @@
 
 #include "mpm/io/results.hpp"
 #include "support/tolerance.hpp"
-#include "verification/mpm/mpm_test_decks.hpp"
+#include "support/mpm_test_decks.hpp"
 
 namespace {
 
 using namespace mpm_test;
 
 mpm::io::SeriesRow collapse(const std::string& smoothing, double t_end) {
-  Deck deck;
-  deck.grid = make_grid(0, 0, 0.5, 60, 20, CellType::Gimp16);
-  deck.materials.push_back(mohr_coulomb(0, 1800, 5e7, 0.3, 30, 500, 0));
-  deck.materials[0].tension_cutoff = 300;
-  fill_block(deck, 0, 10, 0, 8, 2, 0);
-  for (auto& p : deck.particles) {
-    p.stress_yy = -1800 * 9.81 * (8 - p.coord_y);
-    p.stress_xx = p.stress_zz = 0.5 * p.stress_yy;
-  }
-  const auto& g = deck.grid;
-  deck.velocity_constraints.push_back({nodes_where(g, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
-  deck.velocity_constraints.push_back({nodes_where(g, [](double x, double) { return x >= 30 - 1e-9; }), 0, 0.0});
-  const auto base = nodes_where(g, [](double, double y) { return y <= 1e-9; });
-  deck.velocity_constraints.push_back({base, 1, 0.0});
-  deck.friction_constraints.push_back({base, 1, -1, 0.5});
+  auto material = mohr_coulomb(0, 1800, 5e7, 0.3, 30, 500, 0);
+  material.tension_cutoff = 300;
+  Deck deck = collapsing_column(make_grid(0, 0, 0.5, 60, 20, CellType::Gimp16), material, 10, 8, 2, 0.5, 30);
   deck.analysis.scheme = mpm::io::Scheme::USF;
-  deck.analysis.gravity = {0, -9.81};
   deck.analysis.dt = 1e-4;
   deck.analysis.stress_smoothing = smoothing;
   mpm::core::Simulation sim(deck, 1);

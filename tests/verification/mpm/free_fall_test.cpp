@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support/tolerance.hpp"
-#include "verification/mpm/mpm_test_decks.hpp"
+#include "support/mpm_test_decks.hpp"
 
 namespace {
 

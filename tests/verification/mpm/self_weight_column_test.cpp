@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "support/tolerance.hpp"
-#include "verification/mpm/mpm_test_decks.hpp"
+#include "support/mpm_test_decks.hpp"
 
 namespace {
 

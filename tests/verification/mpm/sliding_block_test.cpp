@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "support/tolerance.hpp"
-#include "verification/mpm/mpm_test_decks.hpp"
+#include "support/mpm_test_decks.hpp"
 
 namespace {
 

@@ -83,6 +83,33 @@ inline std::vector<int> nodes_where(const mpm::io::Grid& g, const std::function<
   return out;
 }
 
+/// The collapsing Mohr-Coulomb column of the tests: particles (ppd x ppd per cell) fill [0, width] x
+/// [0, height] of `grid` with K0 = 0.5 geostatic stresses, syy = -rho g (height - y), sxx = szz = syy / 2
+/// (g = 9.81 m/s2, also the deck's gravity); a roller wall at x = 0 (and at x = right_wall when > 0);
+/// the base y = 0 fixed in y with Coulomb friction `base_friction` (CB-Geo friction_constraints, sign_n -1).
+/// The caller sets the scheme and the time step.
+inline Deck collapsing_column(const mpm::io::Grid& grid, const mpm::io::MaterialSpec& material, double width,
+                              double height, int ppd, double base_friction, double right_wall = 0.0) {
+  constexpr double g = 9.81;
+  Deck deck;
+  deck.grid = grid;
+  deck.materials.push_back(material);
+  fill_block(deck, 0, width, 0, height, ppd, material.id);
+  for (auto& p : deck.particles) {
+    p.stress_yy = -material.density * g * (height - p.coord_y);
+    p.stress_xx = p.stress_zz = 0.5 * p.stress_yy;
+  }
+  deck.velocity_constraints.push_back({nodes_where(grid, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
+  if (right_wall > 0.0)
+    deck.velocity_constraints.push_back(
+        {nodes_where(grid, [&](double x, double) { return x >= right_wall - 1e-9; }), 0, 0.0});
+  const auto base = nodes_where(grid, [](double, double y) { return y <= 1e-9; });
+  deck.velocity_constraints.push_back({base, 1, 0.0});
+  deck.friction_constraints.push_back({base, 1, -1, base_friction});
+  deck.analysis.gravity = {0, -g};
+  return deck;
+}
+
 /// Sums over a snapshot.
 struct Totals {
   double mass = 0, mx = 0, my = 0, px = 0, py = 0, kinetic = 0;
