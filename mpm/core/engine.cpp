@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 #include "mpm/core/boundary_rules.hpp"
 #include "mpm/core/shape_functions.hpp"
 
@@ -18,12 +19,8 @@ namespace {
 /// Nodes with less mass take no part in the grid update (CB-Geo's tolerance, include/node.tcc).
 constexpr double kMassTolerance = 1.0e-15;
 
-std::string format_double(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
+/// A number quoted in an input error (10 significant digits, as the deck reader's).
+std::string num(double v) { return common::number_text(v, 10); }
 }  // namespace
 
 StressSmoothing parse_stress_smoothing(const std::string& name) {
@@ -74,11 +71,11 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   scheme_ = an.scheme;
   pic_ = an.velocity_update ? 1.0 : an.pic_blend;
   if (!(pic_ >= 0.0 && pic_ <= 1.0))
-    throw common::InputError("analysis.pic_blend", "expected a number in [0, 1], got " + format_double(pic_));
+    throw common::InputError("analysis.pic_blend", "expected a number in [0, 1], got " + num(pic_));
   locate_ = an.locate_particles;
   damping_ = an.cundall_damping;
   if (!(damping_ >= 0.0 && damping_ < 1.0))
-    throw common::InputError("analysis.damping.damping_factor", "expected a number in [0, 1), got " + format_double(damping_));
+    throw common::InputError("analysis.damping.damping_factor", "expected a number in [0, 1), got " + num(damping_));
   gx_ = an.gravity.x();
   gy_ = an.gravity.y();
   smoothing_ = parse_stress_smoothing(an.stress_smoothing);
@@ -107,20 +104,24 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   friction_dir_.assign(nodes_, -1);
   friction_sign_.assign(nodes_, -1);
   friction_mu_.assign(nodes_, 0.0);
-  for (const auto& c : deck.velocity_constraints) {
-    if (c.dir < 0 || c.dir > 1) throw common::InputError("velocity_constraints", "dir must be 0 or 1");
+  for (std::size_t i = 0; i < deck.velocity_constraints.size(); ++i) {
+    const auto& c = deck.velocity_constraints[i];
+    const std::string where = "velocity_constraints[" + std::to_string(i) + "]";
+    if (c.dir < 0 || c.dir > 1) throw common::InputError(where, "dir must be 0 or 1, got " + std::to_string(c.dir));
     for (int n : c.nodes) {
       if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
-        throw common::InputError("velocity_constraints", "node " + std::to_string(n) + " is not in the mesh");
+        throw common::InputError(where, "node " + std::to_string(n) + " is not in the mesh");
       fixed_[n] |= static_cast<std::uint8_t>(1u << c.dir);
       fixed_velocity_[2 * n + c.dir] = c.velocity;
     }
   }
-  for (const auto& c : deck.friction_constraints) {
-    if (c.dir < 0 || c.dir > 1) throw common::InputError("friction_constraints", "dir must be 0 or 1");
+  for (std::size_t i = 0; i < deck.friction_constraints.size(); ++i) {
+    const auto& c = deck.friction_constraints[i];
+    const std::string where = "friction_constraints[" + std::to_string(i) + "]";
+    if (c.dir < 0 || c.dir > 1) throw common::InputError(where, "dir must be 0 or 1, got " + std::to_string(c.dir));
     for (int n : c.nodes) {
       if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
-        throw common::InputError("friction_constraints", "node " + std::to_string(n) + " is not in the mesh");
+        throw common::InputError(where, "node " + std::to_string(n) + " is not in the mesh");
       friction_dir_[n] = static_cast<std::int8_t>(c.dir);
       friction_sign_[n] = static_cast<std::int8_t>(c.sign_n > 0 ? 1 : -1);
       friction_mu_[n] = c.friction;
@@ -137,7 +138,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     const std::string who = "particle " + std::to_string(r.id);
     if (!std::isfinite(r.coord_x) || !std::isfinite(r.coord_y) || r.coord_x < grid_.xmin || r.coord_x > grid_.xmax ||
         r.coord_y < grid_.ymin || r.coord_y > grid_.ymax)
-      throw common::InputError(who, "at (" + format_double(r.coord_x) + ", " + format_double(r.coord_y) +
+      throw common::InputError(who, "at (" + num(r.coord_x) + ", " + num(r.coord_y) +
                                         ") is outside the mesh");
     std::size_t m = materials_.size();
     for (std::size_t i = 0; i < materials_.size(); ++i)
@@ -506,19 +507,17 @@ void Engine::reduce_row(int j, GridFields summed) {
 
 /// Nodal velocity = momentum / mass, then the velocity constraints (CB-Geo Node::compute_velocity).
 void Engine::nodal_velocity_row(int j) {
-  {
-    for (int i = bi0_; i < bi1_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-      double vx = 0.0, vy = 0.0;
-      if (mass_[n] > kMassTolerance) {
-        vx = momentum_[2 * n] / mass_[n];
-        vy = momentum_[2 * n + 1] / mass_[n];
-      }
-      if (fixed_[n] & 1u) vx = fixed_velocity_[2 * n];
-      if (fixed_[n] & 2u) vy = fixed_velocity_[2 * n + 1];
-      velocity_[2 * n] = vx;
-      velocity_[2 * n + 1] = vy;
+  for (int i = bi0_; i < bi1_; ++i) {
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    double vx = 0.0, vy = 0.0;
+    if (mass_[n] > kMassTolerance) {
+      vx = momentum_[2 * n] / mass_[n];
+      vy = momentum_[2 * n + 1] / mass_[n];
     }
+    if (fixed_[n] & 1u) vx = fixed_velocity_[2 * n];
+    if (fixed_[n] & 2u) vy = fixed_velocity_[2 * n + 1];
+    velocity_[2 * n] = vx;
+    velocity_[2 * n + 1] = vy;
   }
 }
 
@@ -526,39 +525,37 @@ void Engine::nodal_velocity_row(int j) {
 /// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), friction, then
 /// v_new = v + a dt, and the velocity constraints (prescribed velocity, zero acceleration).
 void Engine::integrate_row(int j) {
-  {
-    for (int i = bi0_; i < bi1_; ++i) {
-      const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-      double* u = &updated_[4 * n];
-      const double m = mass_[n];
-      if (!(m > kMassTolerance)) {
-        u[0] = u[1] = u[2] = u[3] = 0.0;
-        continue;
-      }
-      const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
-      double fx = force_[2 * n], fy = force_[2 * n + 1];
-      if (damping_ > 0.0) apply_cundall_damping(damping_, fx, fy, vx, vy);
-      double ax = fx / m, ay = fy / m;
-      if (friction_dir_[n] >= 0)
-        apply_friction_rule(friction_dir_[n], friction_sign_[n], friction_mu_[n], dt_, ax, ay, vx, vy);
-      double wx = vx + ax * dt_, wy = vy + ay * dt_;
-      if (fixed_[n] & 1u) {
-        wx = fixed_velocity_[2 * n];
-        ax = 0.0;
-      }
-      if (fixed_[n] & 2u) {
-        wy = fixed_velocity_[2 * n + 1];
-        ay = 0.0;
-      }
-      u[0] = wx;
-      u[1] = wy;
-      u[2] = ax;
-      u[3] = ay;
+  for (int i = bi0_; i < bi1_; ++i) {
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    double* u = &updated_[4 * n];
+    const double m = mass_[n];
+    if (!(m > kMassTolerance)) {
+      u[0] = u[1] = u[2] = u[3] = 0.0;
+      continue;
     }
+    const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
+    double fx = force_[2 * n], fy = force_[2 * n + 1];
+    if (damping_ > 0.0) apply_cundall_damping(damping_, fx, fy, vx, vy);
+    double ax = fx / m, ay = fy / m;
+    if (friction_dir_[n] >= 0)
+      apply_friction_rule(friction_dir_[n], friction_sign_[n], friction_mu_[n], dt_, ax, ay, vx, vy);
+    double wx = vx + ax * dt_, wy = vy + ay * dt_;
+    if (fixed_[n] & 1u) {
+      wx = fixed_velocity_[2 * n];
+      ax = 0.0;
+    }
+    if (fixed_[n] & 2u) {
+      wy = fixed_velocity_[2 * n + 1];
+      ay = 0.0;
+    }
+    u[0] = wx;
+    u[1] = wy;
+    u[2] = ax;
+    u[3] = ay;
   }
 }
 
-void Engine::report(std::size_t c, std::size_t k, int kind, std::int64_t id, double a, double b) {
+void Engine::report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t id, double a, double b) {
   Problem& pr = problems_[c];
   if (k < pr.k) pr = Problem{k, kind, id, a, b};
 }
@@ -637,9 +634,9 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
     const double speed = std::sqrt(vx * vx + vy * vy);
     if (!std::isfinite(speed) || !std::isfinite(x) || !std::isfinite(y)) {
-      report(c, k, 1, cur_.id[p], vx, vy);
+      report(c, k, ProblemKind::VelocityNotFinite, cur_.id[p], vx, vy);
     } else if (speed * dt_ > h) {
-      report(c, k, 2, cur_.id[p], speed, h / dt_);
+      report(c, k, ProblemKind::RunawayVelocity, cur_.id[p], speed, h / dt_);
     }
     // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
     // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
@@ -649,7 +646,7 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     if (x < grid_.xmin - mx || x > grid_.xmax + mx || y < grid_.ymin - my || y > grid_.ymax + my ||
         !std::isfinite(x) || !std::isfinite(y)) {
       nxt_.key[k] = kRemoved;
-      if (locate_) report(c, k, 3, cur_.id[p], x, y);
+      if (locate_) report(c, k, ProblemKind::LeftTheGrid, cur_.id[p], x, y);
     } else {
       nxt_.key[k] = cell_key(x, y);
     }
@@ -873,23 +870,24 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     nxt_.nsize_y[k] = cur_.nsize_y[p];
     nxt_.lx[k] = cur_.lx[p];
     nxt_.ly[k] = cur_.ly[p];
-    if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(c, k, 4, cur_.id[p], s[0], s[1]);
+    if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(c, k, ProblemKind::StressNotFinite, cur_.id[p], s[0], s[1]);
   }
 }
 
 void Engine::throw_first_error() const {
   const Problem* first = nullptr;
   for (const auto& p : problems_)
-    if (p.kind != 0 && (first == nullptr || p.k < first->k)) first = &p;
+    if (p.kind != ProblemKind::None && (first == nullptr || p.k < first->k)) first = &p;
   if (first == nullptr) return;
   std::ostringstream os;
   os.precision(10);
   os << "step " << step_index_ << ": particle " << first->id;
   switch (first->kind) {
-    case 1: os << " velocity is not finite (" << first->a << ", " << first->b << ")"; break;
-    case 2: os << " velocity runaway: speed " << first->a << " m/s exceeds one cell per step (" << first->b << " m/s)"; break;
-    case 3: os << " left the grid at (" << first->a << ", " << first->b << ")"; break;
-    default: os << " stress is not finite (sxx " << first->a << ", syy " << first->b << ")"; break;
+    case ProblemKind::VelocityNotFinite: os << " velocity is not finite (" << first->a << ", " << first->b << ")"; break;
+    case ProblemKind::RunawayVelocity: os << " velocity runaway: speed " << first->a << " m/s exceeds one cell per step (" << first->b << " m/s)"; break;
+    case ProblemKind::LeftTheGrid: os << " left the grid at (" << first->a << ", " << first->b << ")"; break;
+    case ProblemKind::StressNotFinite:
+    case ProblemKind::None: os << " stress is not finite (sxx " << first->a << ", syy " << first->b << ")"; break;
   }
   throw common::NumericalError(os.str());
 }

@@ -153,7 +153,8 @@ class Engine {
   std::vector<int> chunk_row0_, chunk_row1_;
   std::vector<std::size_t> chunk_offset_;
   std::vector<std::size_t> row_first_chunk_;  ///< per node row: the first chunk whose band reaches it
-  int box_width_ = 0;  std::vector<std::uint8_t> fixed_;               ///< bit 0: x fixed, bit 1: y fixed
+  int box_width_ = 0;                             ///< bi1_ - bi0_
+  std::vector<std::uint8_t> fixed_;               ///< bit 0: x fixed, bit 1: y fixed
   std::vector<double> fixed_velocity_;            ///< 2 per node
   std::vector<std::int8_t> friction_dir_;         ///< -1: none
   std::vector<std::int8_t> friction_sign_;
@@ -186,14 +187,15 @@ class Engine {
   int threads_ = 1;
 
   /// The first problem a chunk met in a step (by iteration index), reported after the step.
+  enum class ProblemKind { None, VelocityNotFinite, RunawayVelocity, LeftTheGrid, StressNotFinite };
   struct Problem {
     std::size_t k = static_cast<std::size_t>(-1);
-    int kind = 0;  ///< 1 NaN velocity, 2 runaway velocity, 3 left the grid, 4 NaN stress
+    ProblemKind kind = ProblemKind::None;
     std::int64_t id = 0;
     double a = 0, b = 0;
   };
   std::vector<Problem> problems_;
-  void report(std::size_t c, std::size_t k, int kind, std::int64_t id, double a, double b);
+  void report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t id, double a, double b);
 };
 
 }  // namespace mpm::core
