@@ -43,6 +43,17 @@ const std::string& word_of(const std::string& shown, const TextLine& line, std::
   return line.words[word];
 }
 
+/// The "x y" or "x y 0" of one coordinate line of a 2D file; `what` names the line in errors
+/// ("node 3", "particle 7") and `file_kind` the file ("mesh", "deck").
+Eigen::Vector2d parse_xy(const std::string& shown, const TextLine& l, const std::string& what, const char* file_kind) {
+  if (l.words.size() != 2 && l.words.size() != 3)
+    throw common::InputError(at_line(shown, l.number),
+                             what + ": expected \"x y\", got " + std::to_string(l.words.size()) + " values");
+  if (l.words.size() == 3 && parse_double(shown, l, 2) != 0.0)
+    throw common::InputError(at_line(shown, l.number), what + ": a 2D " + file_kind + " needs z = 0");
+  return {parse_double(shown, l, 0), parse_double(shown, l, 1)};
+}
+
 }  // namespace
 
 std::vector<TextLine> read_data_lines(const std::filesystem::path& file, const std::string& shown) {
@@ -99,13 +110,7 @@ MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& sh
   MeshFile mesh;
   mesh.nodes.reserve(nnodes);
   for (long long k = 1; k <= nnodes; ++k) {
-    const TextLine& l = lines[k];
-    if (l.words.size() != 2 && l.words.size() != 3)
-      throw common::InputError(at_line(shown, l.number), "node " + std::to_string(k - 1) + ": expected \"x y\", got " +
-                                                            std::to_string(l.words.size()) + " values");
-    if (l.words.size() == 3 && parse_double(shown, l, 2) != 0.0)
-      throw common::InputError(at_line(shown, l.number), "node " + std::to_string(k - 1) + ": a 2D mesh needs z = 0");
-    mesh.nodes.emplace_back(parse_double(shown, l, 0), parse_double(shown, l, 1));
+    mesh.nodes.push_back(parse_xy(shown, lines[k], "node " + std::to_string(k - 1), "mesh"));
   }
   mesh.cells.reserve(ncells);
   for (long long k = nnodes + 1; k < static_cast<long long>(lines.size()); ++k) {
@@ -133,13 +138,7 @@ std::vector<Eigen::Vector2d> read_particle_coordinates(const std::filesystem::pa
   std::vector<Eigen::Vector2d> xs;
   xs.reserve(lines.size() - 1);
   for (std::size_t k = 1; k < lines.size(); ++k) {
-    const TextLine& l = lines[k];
-    if (l.words.size() != 2 && l.words.size() != 3)
-      throw common::InputError(at_line(shown, l.number), "particle " + std::to_string(k - 1) + ": expected \"x y\", got " +
-                                                            std::to_string(l.words.size()) + " values");
-    if (l.words.size() == 3 && parse_double(shown, l, 2) != 0.0)
-      throw common::InputError(at_line(shown, l.number), "particle " + std::to_string(k - 1) + ": a 2D deck needs z = 0");
-    xs.emplace_back(parse_double(shown, l, 0), parse_double(shown, l, 1));
+    xs.push_back(parse_xy(shown, lines[k], "particle " + std::to_string(k - 1), "deck"));
   }
   return xs;
 }
