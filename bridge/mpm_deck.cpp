@@ -9,9 +9,13 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace bridge {
 namespace {
+
+/// A number quoted in an error message (9 significant digits, as the other bridge messages).
+std::string num(double v) { return common::number_text(v, 9); }
 
 using nlohmann::ordered_json;
 
@@ -89,10 +93,9 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
   const double x1 = g.x0 + g.nx * g.h, y1 = g.y0 + g.ny * g.h;
   for (const auto& p : particles)
     if (p.coord_x < g.x0 || p.coord_x > x1 || p.coord_y < g.y0 || p.coord_y > y1)
-      throw common::InputError("--extent", "particle " + std::to_string(p.id) + " at (" + std::to_string(p.coord_x) + ", " +
-                                               std::to_string(p.coord_y) + ") lies outside the grid [" + std::to_string(g.x0) +
-                                               ", " + std::to_string(x1) + "] x [" + std::to_string(g.y0) + ", " +
-                                               std::to_string(y1) + "]");
+      throw common::InputError("--extent", "particle " + std::to_string(p.id) + " at (" + num(p.coord_x) + ", " +
+                                               num(p.coord_y) + ") lies outside the grid [" + num(g.x0) + ", " + num(x1) +
+                                               "] x [" + num(g.y0) + ", " + num(y1) + "]");
   return g;
 }
 
@@ -125,8 +128,8 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
     throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
   if (options.base_y && !(*options.base_y >= g.y0 && *options.base_y < g.y0 + g.ny * g.h))
-    throw common::InputError("--base-y", "expected a height inside the grid [" + std::to_string(g.y0) + ", " +
-                                             std::to_string(g.y0 + g.ny * g.h) + ")");
+    throw common::InputError("--base-y", "expected a height inside the grid [" + num(g.y0) + ", " +
+                                             num(g.y0 + g.ny * g.h) + "), got " + num(*options.base_y));
   if (options.base == Base::Friction && !(options.base_friction >= 0))
     throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
