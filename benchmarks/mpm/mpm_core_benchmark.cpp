@@ -197,6 +197,13 @@ void runout(int threads, mpm::io::Scheme scheme, double pic_blend) {
 }
 
 int main(int argc, char** argv) {
+  const char* usage = "usage: mpm_core_benchmark [--quick | --throughput | --accuracy | --runout [threads [usl|musl|usf [pic_blend]]]]\n";
+  if (argc > 1 && std::strcmp(argv[1], "--quick") != 0 && std::strcmp(argv[1], "--throughput") != 0 &&
+      std::strcmp(argv[1], "--accuracy") != 0 && std::strcmp(argv[1], "--runout") != 0) {
+    const bool help = std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0;
+    std::fputs(usage, help ? stdout : stderr);
+    return help ? 0 : 2;
+  }
   if (argc > 1 && std::strcmp(argv[1], "--runout") == 0) {
     const std::string scheme = argc > 3 ? argv[3] : "musl";
     runout(argc > 2 ? std::atoi(argv[2]) : 2,
