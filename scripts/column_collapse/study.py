@@ -150,7 +150,7 @@ def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads):
             "results": os.path.join(d, "results", "column")}
 
 
-def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None):
+def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None, pic_blend=PIC_BLEND):
     """MPM only: particles on the MPM grid (ppd x ppd per cell, at the centres of equal sub-cells), K0
     elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v."""
     os.makedirs(d, exist_ok=True)
@@ -208,7 +208,7 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
                        "tension_cutoff": COHESION / math.tan(math.radians(PHI)), "softening": False}],
         "external_loading_conditions": {"gravity": [0.0, -G]},
         "analysis": {"type": "MPMExplicit2D", "mpm_scheme": SCHEME, "velocity_update": False, "locate_particles": True,
-                     "dt": dt, "cfl": CFL, "pic_blend": PIC_BLEND, "stress_smoothing": smoothing,
+                     "dt": dt, "cfl": CFL, "pic_blend": pic_blend, "stress_smoothing": smoothing,
                      "nsteps": nsteps, "uuid": "column",
                      "damping": {"type": "Cundall", "damping_factor": 0.0}},
         "post_processing": {"path": "results/", "output_steps": max(1, int(round(out_every / dt)))},
@@ -217,12 +217,15 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
         json.dump(deck, f, indent=2)
 
 
-def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None):
+def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None,
+                 pic_blend=PIC_BLEND):
     d = os.path.join(out, name)
     if os.path.isdir(d):
         shutil.rmtree(d)
-    write_mpm_only_deck(scene, d, smoothing, duration, out_every)
+    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend)
     w = run_cmd([bins["mpm"], "-f", d + "/", "-i", "mpm.json", "--threads", str(threads)], logfile=os.path.join(d, "mpm.log"))
+    with open(os.path.join(d, "wall.txt"), "w") as f:
+        f.write("%.3f\n" % w)
     return {"name": name, "kind": "mpm", "dir": d, "t0": 0.0, "wall": {"mpm": w},
             "results": os.path.join(d, "results", "column"), "aspect": scene.aspect,
             "width": scene.width, "height": scene.height}
@@ -606,26 +609,56 @@ def sweep_plot(out, results):
     return p
 
 
-def run_sweep(bins, out, cell, ppd, jobs):
+SWEEP_RETRY_PIC_BLEND = 0.02
+
+
+def sweep_one(bins, out, a, cell, ppd):
+    """One MPM-only column of aspect ratio a; on a numerical failure (FLIP velocity runaway in the thin fast
+    front of a tall column) it is run again with a 2 % PIC blend (mpm's CFL 0.5 stability test)."""
+    sc = sweep_scene(a, cell, ppd)
+    try:
+        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a)
+    except RuntimeError as e:
+        log("sweep a = %g failed (%s); again with a %g PIC blend" % (a, str(e).splitlines()[-1][:160], SWEEP_RETRY_PIC_BLEND))
+        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a, pic_blend=SWEEP_RETRY_PIC_BLEND)
+
+
+def collect_sweep(out, cell, ppd):
+    """Results of the sweep runs present in out/sweep (complete runs only)."""
     results = []
+    for a in SWEEP_A:
+        sc = sweep_scene(a, cell, ppd)
+        d = os.path.join(out, "sweep", "a_%g" % a)
+        res = os.path.join(d, "results", "column")
+        if not os.path.exists(os.path.join(res, "series.csv")):
+            continue
+        s = read_series(res)
+        if s["time"][-1] < sc.t_total - 0.01:
+            log("sweep a = %g: incomplete run (ends at %.2f s), left out" % (a, s["time"][-1]))
+            continue
+        with open(os.path.join(d, "mpm.json")) as f:
+            blend = json.load(f)["analysis"].get("pic_blend", 0.0)
+        wall = float(open(os.path.join(d, "wall.txt")).read()) if os.path.exists(os.path.join(d, "wall.txt")) else float("nan")
+        results.append({"a_nominal": a, "aspect": sc.aspect, "width": sc.width, "height": sc.height,
+                        "runout": (s["runout_x_p98"][-1] - sc.width) / sc.width, "height_ratio": s["height_y_p995"][-1] / sc.height,
+                        "t_end": s["time"][-1], "wall": wall, "pic_blend": blend})
+    return results
+
+
+def run_sweep(bins, out, cell, ppd, jobs, only=None):
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
-        futs = {}
-        for a in SWEEP_A:
-            sc = sweep_scene(a, cell, ppd)
-            futs[ex.submit(run_mpm_only, bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a)] = sc
+        futs = {ex.submit(sweep_one, bins, out, a, cell, ppd): a for a in (only or SWEEP_A)}
         for f in concurrent.futures.as_completed(futs):
-            sc = futs[f]
-            run = f.result()
-            s = mpm_run_series(run)
-            run_r = {"a_nominal": run["name"], "aspect": sc.aspect, "width": sc.width, "height": sc.height,
-                     "runout": (s["L"][-1] - sc.width) / sc.width, "height_ratio": s["H"][-1] / sc.height,
-                     "t_end": s["t"][-1], "wall": run["wall"]["mpm"],
-                     "lube": float(lube(sc.aspect)), "lajeunesse": float(lajeunesse(sc.aspect))}
-            prune_particle_files(run, [])
-            log("sweep a = %.2f (%g x %g m): runout %.2f (Lube %.2f), %.1f s" % (sc.aspect, sc.width, sc.height,
-                                                                              run_r["runout"], run_r["lube"], run_r["wall"]))
-            results.append(run_r)
-    results.sort(key=lambda r: r["aspect"])
+            try:
+                run = f.result()
+                prune_particle_files(run, [])
+                log("sweep a = %g done: %.1f s" % (futs[f], run["wall"]["mpm"]))
+            except RuntimeError as e:
+                log("sweep a = %g FAILED: %s" % (futs[f], str(e).splitlines()[-1][:200]))
+    results = collect_sweep(out, cell, ppd)
+    for r in results:
+        log("sweep a = %.2f (%g x %g m): runout %.2f (Lube %.2f, Lajeunesse %.2f)" % (
+            r["aspect"], r["width"], r["height"], r["runout"], float(lube(r["aspect"])), float(lajeunesse(r["aspect"]))))
     write_sweep_report(out, results)
     return results
 
@@ -636,11 +669,12 @@ def write_sweep_report(out, results):
         r["lube"], r["lajeunesse"] = float(lube(r["aspect"])), float(lajeunesse(r["aspect"]))
     with open(os.path.join(out, "sweep.json"), "w") as f:
         json.dump(results, f, indent=1)
-    lines = ["| a = H0/L0 | column (m) | MPM runout (L-L0)/L0 | Lube et al. 2005 | Lajeunesse et al. 2005 | H/H0 | wall (s) |",
-             "|---|---|---|---|---|---|---|"]
+    lines = ["| a = H0/L0 | column (m) | MPM runout (L-L0)/L0 | Lube et al. 2005 | Lajeunesse et al. 2005 | H/H0 | PIC blend | wall (s) |",
+             "|---|---|---|---|---|---|---|---|"]
     for r in results:
-        lines.append("| %.2f | %g x %g | %.2f | %.2f | %.2f | %.2f | %.1f |" % (r["aspect"], r["width"], r["height"], r["runout"],
-                                                                             r["lube"], r["lajeunesse"], r["height_ratio"], r["wall"]))
+        lines.append("| %.2f | %g x %g | %.2f | %.2f | %.2f | %.2f | %g | %.1f |" % (
+            r["aspect"], r["width"], r["height"], r["runout"], r["lube"], r["lajeunesse"], r["height_ratio"],
+            r.get("pic_blend", 0.0), r["wall"]))
     with open(os.path.join(out, "sweep.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     sweep_plot(out, results)
@@ -666,7 +700,9 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=2, help="runs at a time (each MPM run uses one thread)")
     ap.add_argument("--sweep", action="store_true", help="also run the aspect-ratio sweep (MPM only)")
     ap.add_argument("--sweep-only", action="store_true", help="run only the aspect-ratio sweep")
-    ap.add_argument("--sweep-report", action="store_true", help="rewrite the sweep table and plot from --out/sweep.json")
+    ap.add_argument("--sweep-report", action="store_true", help="rewrite the sweep table and plot from the runs in --out/sweep")
+    ap.add_argument("--sweep-a", default=None, help="with --sweep-only: only these aspect ratios (comma list of %s)"
+                    % ",".join("%g" % a for a in SWEEP_A))
     ap.add_argument("--bin", default=None, help="folder with fem_tcl, fem2mpm, mpm (default build/bin)")
     ap.add_argument("--fem-script", default=os.path.join(HERE, "column_collapse.tcl"), help="the FEM collapse script")
     ap.add_argument("--width", type=float, default=50.0, help="column width L0, m")
@@ -691,11 +727,11 @@ def main(argv=None):
     mode = "full" if args.full else "quick"
 
     if args.sweep_report:
-        with open(os.path.join(out, "sweep.json")) as f:
-            write_sweep_report(out, json.load(f))
+        write_sweep_report(out, collect_sweep(out, cell, ppd))
         return 0
     if args.sweep_only:
-        run_sweep(bins, out, cell, ppd, args.jobs)
+        only = [float(a) for a in args.sweep_a.split(",")] if args.sweep_a else None
+        run_sweep(bins, out, cell, ppd, args.jobs, only)
         log("sweep done in %.1f s" % (time.perf_counter() - t_start))
         return 0
 
