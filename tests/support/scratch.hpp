@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace test_support {
 
@@ -22,5 +23,25 @@ inline std::filesystem::path fresh_scratch_folder(const std::string& prefix, con
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+/// A fresh scratch folder that is removed, with its per-process parent when that is left empty, when the
+/// object goes out of scope: for tests that must leave nothing behind.
+class ScopedScratchFolder {
+ public:
+  ScopedScratchFolder(const std::string& prefix, const std::string& name)
+      : path_(fresh_scratch_folder(prefix, name)) {}
+  ScopedScratchFolder(const ScopedScratchFolder&) = delete;
+  ScopedScratchFolder& operator=(const ScopedScratchFolder&) = delete;
+  ~ScopedScratchFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+    std::filesystem::remove(path_.parent_path(), ec);  // only succeeds when empty
+  }
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 }  // namespace test_support

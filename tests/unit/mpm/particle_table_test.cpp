@@ -13,10 +13,6 @@
 namespace fs = std::filesystem;
 using mpm::io::ParticleRecord;
 
-namespace {
-fs::path scratch(const std::string& name) { return test_support::scratch_folder("geoflow_particle_table") / name; }
-}  // namespace
-
 TEST(ParticleTable, RoundTripKeepsEveryMember) {
   std::vector<ParticleRecord> in(3);
   for (std::size_t i = 0; i < in.size(); ++i) {
@@ -27,7 +23,8 @@ TEST(ParticleTable, RoundTripKeepsEveryMember) {
     r.cell_id = 42 + static_cast<std::int64_t>(i); r.status = 1; r.material_id = 7; r.nstate_vars = 7;
     for (int k = 0; k < 20; ++k) r.svars[k] = k * 0.5 + i;
   }
-  const auto file = scratch("roundtrip.h5");
+  const test_support::ScopedScratchFolder dir("geoflow_particle_table", "roundtrip");
+  const auto file = dir / "roundtrip.h5";
   mpm::io::write_particle_table(file, in);
   EXPECT_FALSE(fs::exists(file.string() + ".tmp." + std::to_string(::getpid())));
   const auto out = mpm::io::read_particle_table(file);
@@ -70,7 +67,8 @@ TEST(ParticleTable, MissingFileIsAnInputErrorNamingTheFile) {
 }
 
 TEST(ParticleTable, GarbageFileIsAnInputError) {
-  const auto file = scratch("garbage.h5");
+  const test_support::ScopedScratchFolder dir("geoflow_particle_table", "garbage");
+  const auto file = dir / "garbage.h5";
   std::ofstream(file) << "not hdf5";
   EXPECT_THROW(mpm::io::read_particle_table(file), common::InputError);
 }
