@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fem_tcl/tcl/interpreter.hpp"
+#include "support/recorder_compare.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -53,20 +54,6 @@ std::string eval(Interpreter& interp, const std::string& script) {
   }
 }
 
-std::vector<std::vector<double>> read_rows(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::vector<double> row;
-    double v;
-    while (ls >> v) row.push_back(v);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 TEST(MeshQuality, QueryRecorderAndOneTimeWarnings) {
   const fs::path file = fs::temp_directory_path() / ("geoflow_mesh_quality_" + std::to_string(::getpid()) + ".out");
   Interpreter interp;
@@ -101,7 +88,7 @@ TEST(MeshQuality, QueryRecorderAndOneTimeWarnings) {
   EXPECT_CLOSE(value, -0.15, 1e-12, 0.0);
   EXPECT_EQ(element, 2);
   eval(interp, "remove recorders");
-  const auto rows = read_rows(file);
+  const auto rows = test_support::read_numeric_table(file);
   ASSERT_EQ(rows.size(), 4u);
   for (std::size_t k = 0; k < rows.size(); ++k) {
     ASSERT_EQ(rows[k].size(), 5u);
