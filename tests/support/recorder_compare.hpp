@@ -15,7 +15,9 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include <sys/wait.h>
+
+#include "support/scratch.hpp"
 
 namespace test_support {
 
@@ -103,32 +105,19 @@ inline ::testing::AssertionResult compare_tokens(const std::string& reference, c
   return ::testing::AssertionSuccess();
 }
 
-/// A fresh scratch folder (removed by the destructor).
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 /// Runs `<bin_dir>/fem_tcl <script> <args>` in `dir`, stdout -> stdout.txt, stderr -> stderr.txt.
 /// Returns the exit status.
 inline int run_fem_tcl(const std::filesystem::path& bin_dir, const std::filesystem::path& dir,
                        const std::string& script, const std::string& args = "") {
-  const std::string cmd = "cd '" + dir.string() + "' && '" + (bin_dir / "fem_tcl").string() + "' " + script + " " +
+  const std::string cmd = "cd '" + dir.string() + "' && '" + (bin_dir / "fem_tcl").string() + "' '" + script + "' " +
                           args + " > stdout.txt 2> stderr.txt";
   const int status = std::system(cmd.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// What a run_fem_tcl run in `dir` printed: standard output, then standard error.
+inline std::string fem_tcl_output(const std::filesystem::path& dir) {
+  return read_text(dir / "stdout.txt") + read_text(dir / "stderr.txt");
 }
 
 }  // namespace test_support

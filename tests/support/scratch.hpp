@@ -24,21 +24,20 @@ inline std::filesystem::path fresh_scratch_folder(const std::string& prefix, con
   return dir;
 }
 
-/// A fresh scratch folder that is removed, with its per-process parent when that is left empty, when the
-/// object goes out of scope: for tests that must leave nothing behind.
-class ScopedScratchFolder {
+/// A fresh scratch folder <system temp folder>/<name>_<pid>, removed by the destructor.
+class ScratchDir {
  public:
-  ScopedScratchFolder(const std::string& prefix, const std::string& name)
-      : path_(fresh_scratch_folder(prefix, name)) {}
-  ScopedScratchFolder(const ScopedScratchFolder&) = delete;
-  ScopedScratchFolder& operator=(const ScopedScratchFolder&) = delete;
-  ~ScopedScratchFolder() {
+  explicit ScratchDir(const std::string& name) : path_(scratch_folder(name)) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  ~ScratchDir() {
     std::error_code ec;
     std::filesystem::remove_all(path_, ec);
-    std::filesystem::remove(path_.parent_path(), ec);  // only succeeds when empty
   }
   const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
 
  private:
   std::filesystem::path path_;

@@ -23,8 +23,8 @@ TEST(ParticleTable, RoundTripKeepsEveryMember) {
     r.cell_id = 42 + static_cast<std::int64_t>(i); r.status = 1; r.material_id = 7; r.nstate_vars = 7;
     for (int k = 0; k < 20; ++k) r.svars[k] = k * 0.5 + i;
   }
-  const test_support::ScopedScratchFolder dir("geoflow_particle_table", "roundtrip");
-  const auto file = dir / "roundtrip.h5";
+  const test_support::ScratchDir dir("geoflow_particle_table_roundtrip");
+  const auto file = dir.path() / "roundtrip.h5";
   mpm::io::write_particle_table(file, in);
   EXPECT_FALSE(fs::exists(file.string() + ".tmp." + std::to_string(::getpid())));
   const auto out = mpm::io::read_particle_table(file);
@@ -67,8 +67,8 @@ TEST(ParticleTable, MissingFileIsAnInputErrorNamingTheFile) {
 }
 
 TEST(ParticleTable, GarbageFileIsAnInputError) {
-  const test_support::ScopedScratchFolder dir("geoflow_particle_table", "garbage");
-  const auto file = dir / "garbage.h5";
+  const test_support::ScratchDir dir("geoflow_particle_table_garbage");
+  const auto file = dir.path() / "garbage.h5";
   std::ofstream(file) << "not hdf5";
   EXPECT_THROW(mpm::io::read_particle_table(file), common::InputError);
 }

@@ -5,7 +5,6 @@
 // the estimated order p = log(r_{k+1}/r_k) / log(r_k/r_{k-1}) of the last iterates above round-off is about 2.
 // The residual histories (NormDispIncr, printFlag 1) are printed.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -16,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "support/scratch.hpp"
+#include "support/recorder_compare.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -25,13 +24,11 @@ namespace fs = std::filesystem;
 
 TEST(MohrCoulombColumn, StageSwitchAndQuadraticNewtonConvergence) {
   const fs::path script = fs::path(GEOFLOW_SOURCE_DIR) / "tests/verification/constitutive/data/mc_column_stage_switch.tcl";
-  // A scratch folder of this process under the system temp folder (removed when the test passes).
-  const fs::path run = test_support::fresh_scratch_folder("geoflow_mc_column_newton", "run");
-  const std::string cmd = "cd \"" + run.string() + "\" && \"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() +
-                          "\" \"" + script.string() + "\" > out.txt 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << "see " << (run / "out.txt");
+  const test_support::ScratchDir run("geoflow_mc_column_newton");
+  ASSERT_EQ(test_support::run_fem_tcl(GEOFLOW_BIN_DIR, run.path(), script.string()), 0)
+      << test_support::read_text(run.path() / "stderr.txt");
 
-  std::ifstream in(run / "out.txt");
+  std::istringstream in(test_support::fem_tcl_output(run.path()));
   std::string line;
   std::vector<std::vector<double>> steps;
   std::vector<double> stress3d;
@@ -76,7 +73,6 @@ TEST(MohrCoulombColumn, StageSwitchAndQuadraticNewtonConvergence) {
   // Every step whose history reaches the asymptotic range shows order ~2 (a step that converges in two or three
   // iterations has no triple to estimate from; all 20 do here).
   EXPECT_GE(quadratic_steps, 18);
-  if (!::testing::Test::HasFailure()) fs::remove_all(run.parent_path());
 }
 
 }  // namespace

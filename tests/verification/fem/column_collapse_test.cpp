@@ -24,12 +24,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
+#include "support/recorder_compare.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -52,24 +51,23 @@ Table read_table(const fs::path& file, char sep = ' ') {
   return rows;
 }
 
+/// Runs scripts/column_collapse/column_collapse.tcl in `dir`, writing its outputs there too.
+int run_collapse(const fs::path& dir, const std::string& options) {
+  const fs::path script = fs::path(GEOFLOW_SOURCE_DIR) / "scripts/column_collapse/column_collapse.tcl";
+  return test_support::run_fem_tcl(GEOFLOW_BIN_DIR, dir, script.string(), "'" + dir.string() + "' " + options);
+}
+
 constexpr int kNx = 10, kNy = 8;
 constexpr double kRho = 1.925, kG = 9.81, kNu = 0.23;
 
 class ColumnCollapse : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("geoflow_column_collapse_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    const std::string cmd = "\"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() + "\" \"" +
-                            (fs::path(GEOFLOW_SOURCE_DIR) / "scripts/column_collapse/column_collapse.tcl").string() +
-                            "\" \"" + dir_.string() + "\" -width 10 -height 8 -tend 1.0 > \"" +
-                            (fs::temp_directory_path() / ("geoflow_column_collapse_" + std::to_string(::getpid()) + ".txt")).string() +
-                            "\" 2>&1";
-    status_ = std::system(cmd.c_str());
+    dir_ = test_support::fresh_scratch_folder("geoflow_column_collapse", "run");
+    status_ = run_collapse(dir_, "-width 10 -height 8 -tend 1.0");
   }
   static void TearDownTestSuite() {
-    fs::remove(fs::temp_directory_path() / ("geoflow_column_collapse_" + std::to_string(::getpid()) + ".txt"));
-    if (::testing::UnitTest::GetInstance()->failed_test_count() == 0) fs::remove_all(dir_);
+    if (::testing::UnitTest::GetInstance()->failed_test_count() == 0) fs::remove_all(dir_.parent_path());
   }
   static fs::path dir_;
   static int status_;
@@ -177,13 +175,9 @@ TEST_F(ColumnCollapse, CollapsesDissipatingEnergy) {
 TEST_F(ColumnCollapse, CutsStepsThatFailAndLandsOnTheRecordTimes) {
   ASSERT_EQ(status_, 0);
   const fs::path cut = dir_ / "cut";
-  const std::string cmd = "\"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() + "\" \"" +
-                          (fs::path(GEOFLOW_SOURCE_DIR) / "scripts/column_collapse/column_collapse.tcl").string() +
-                          "\" \"" + cut.string() + "\" -width 10 -height 8 -tend 1.0 -dt 0.05 > \"" +
-                          (dir_ / "cut.txt").string() + "\" 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0);
-  std::ifstream summary(dir_ / "cut.txt");
-  std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  fs::create_directories(cut);
+  ASSERT_EQ(run_collapse(cut, "-width 10 -height 8 -tend 1.0 -dt 0.05"), 0);
+  const std::string text = test_support::fem_tcl_output(cut);
   EXPECT_NE(text.find("reached t = 1.0 s"), std::string::npos) << text;
   const Table steps = read_table(cut / "steps.csv", ',');
   int cut_steps = 0;
@@ -200,13 +194,9 @@ TEST_F(ColumnCollapse, CutsStepsThatFailAndLandsOnTheRecordTimes) {
 
 TEST_F(ColumnCollapse, StopsCleanlyWhenTheMeshInverts) {
   const fs::path run = dir_ / "inverting";
-  const std::string cmd = "\"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() + "\" \"" +
-                          (fs::path(GEOFLOW_SOURCE_DIR) / "scripts/column_collapse/column_collapse.tcl").string() +
-                          "\" \"" + run.string() + "\" -width 25 -height 20 -tend 3.0 > \"" +
-                          (dir_ / "inverting.txt").string() + "\" 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0);
-  std::ifstream summary(dir_ / "inverting.txt");
-  std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+  fs::create_directories(run);
+  ASSERT_EQ(run_collapse(run, "-width 25 -height 20 -tend 3.0"), 0);
+  const std::string text = test_support::fem_tcl_output(run);
   EXPECT_NE(text.find("column_collapse: the mesh inverted at t = "), std::string::npos) << text;
   EXPECT_NE(text.find("WARNING mesh quality: at t = "), std::string::npos) << text;
   const Table steps = read_table(run / "steps.csv", ',');

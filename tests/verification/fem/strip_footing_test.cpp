@@ -17,29 +17,26 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string>
-#include <unistd.h>
 #include <vector>
+
+#include "support/recorder_compare.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 constexpr double kPrandtl = 2.0 + 3.14159265358979323846;
 
-/// Runs strip_footing.tcl with `args`; returns its output lines.
+/// Runs strip_footing.tcl with `args`; returns its output lines (standard output, then standard error).
 std::vector<std::string> run_footing(const std::string& args) {
   const fs::path script = fs::path(GEOFLOW_SOURCE_DIR) / "tests/verification/fem/data/strip_footing.tcl";
-  const fs::path out = fs::temp_directory_path() / ("geoflow_strip_footing_" + std::to_string(::getpid()) + ".txt");
-  const std::string cmd = "\"" + (fs::path(GEOFLOW_BIN_DIR) / "fem_tcl").string() + "\" \"" + script.string() +
-                          "\" " + args + " > \"" + out.string() + "\" 2>&1";
-  const int status = std::system(cmd.c_str());
-  EXPECT_EQ(status, 0) << cmd;
-  std::ifstream in(out);
+  const test_support::ScratchDir dir("geoflow_strip_footing");
+  EXPECT_EQ(test_support::run_fem_tcl(GEOFLOW_BIN_DIR, dir.path(), script.string(), args), 0) << args;
+  std::istringstream in(test_support::fem_tcl_output(dir.path()));
   std::vector<std::string> lines;
   std::string line;
   while (std::getline(in, line)) lines.push_back(line);
-  fs::remove(out);
   return lines;
 }
 
