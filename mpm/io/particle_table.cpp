@@ -3,7 +3,7 @@
 #include <hdf5.h>
 #include <hdf5_hl.h>
 
-#include <array>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -50,6 +50,7 @@ std::vector<Member> schema() {
   m.push_back({"nstate_vars", offsetof(ParticleRecord, nstate_vars), MemberType::UInt32});
   for (std::size_t k = 0; k < kMaxStateVariables; ++k)
     f64(("svars_" + std::to_string(k)).c_str(), offsetof(ParticleRecord, svars) + k * sizeof(double));
+  assert(m.size() == kParticleTableMembers);  // FORMATS.md section 4: 53 members
   return m;
 }
 
