@@ -5,7 +5,6 @@
 #include <zlib.h>
 
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +19,7 @@
 
 #include "mpm/io/particle_table.hpp"
 #include "mpm/io/results.hpp"
+#include "support/scratch.hpp"
 
 namespace mpm_regression {
 
@@ -28,9 +28,7 @@ namespace fs = std::filesystem;
 inline const fs::path kCases = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/cbgeo";
 inline const fs::path kMpm = fs::path(GEOFLOW_BIN_DIR) / "mpm";
 
-inline fs::path scratch_root() {
-  return fs::temp_directory_path() / ("geoflow_mpm_regression_" + std::to_string(::getpid()));
-}
+inline fs::path scratch_root() { return test_support::scratch_folder("geoflow_mpm_regression"); }
 
 /// Removes this process's scratch folder unless the test failed (then it is kept to look at).
 class ScratchCleanup : public ::testing::EmptyTestEventListener {
