@@ -23,6 +23,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
   mpm::io::ProgressLine progress(deck.first_step, deck.analysis.nsteps);
   const long long nsteps = deck.analysis.nsteps, every = deck.output.output_steps;
   try {
+    results.write_start(sim.time(), sim.snapshot());
     while (sim.step_index() < nsteps) {
       const long long step = sim.step_index();
       sim.step();

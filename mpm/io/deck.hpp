@@ -74,6 +74,11 @@ struct Output {
   std::filesystem::path path;  ///< results folder (CB-Geo post_processing.path, relative to the working dir)
   std::string uuid;            ///< run name: outputs go to path/uuid/
   long long output_steps = 100;
+  /// CB-Geo post_processing.vtk / vtk_statevars: the particle arrays of the VTK files
+  /// (particles<step>.vtp + particles.pvd), as names of particle_fields() / CB-Geo state variables.
+  /// Both empty: no VTK files (ParaView opens particles.xdmf).
+  std::vector<std::string> vtk_fields;
+  std::vector<std::string> vtk_statevars;
 };
 
 struct Deck {

@@ -14,6 +14,7 @@
 #include "mpm/io/ascii_files.hpp"
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
+#include "mpm/io/output_keys.hpp"
 
 namespace mpm::io {
 namespace fs = std::filesystem;
@@ -482,8 +483,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     deck.output.output_steps = pp.integer("output_steps");
     if (deck.output.output_steps <= 0)
       pp.fail("output_steps", "expected an integer > 0, got " + std::to_string(deck.output.output_steps));
-    pp.accept_only("vtk", {json::array()}, "VTK files are not written; ParaView opens results/<uuid>/particles.xdmf");
-    pp.accept_only("vtk_statevars", {json::array()}, "VTK files are not written; ParaView opens results/<uuid>/particles.xdmf");
+    read_vtk_keys(pp, deck.output);
     pp.finish();
   }
 

@@ -8,10 +8,13 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "common/atomic_file.hpp"
+#include "mpm/io/particle_fields.hpp"
+#include "mpm/io/vtk_files.hpp"
 
 namespace mpm::io {
 namespace fs = std::filesystem;
@@ -100,60 +103,51 @@ std::string format_row(const SeriesRow& r) {
   return os.str();
 }
 
-/// Writes the "/xdmf" datasets that particles.xdmf points at.
-void write_xdmf_datasets(hid_t file, std::span<const ParticleRecord> ps, const std::string& name) {
+/// Writes the "/xdmf" datasets that particles.xdmf points at: coordinates, connectivity and every
+/// particle_fields() array. `start` (the first frame) also records its step and time as attributes.
+void write_xdmf_datasets(hid_t file, std::span<const ParticleRecord> ps, const Grid& grid, const std::string& name,
+                         const XdmfFrame* start = nullptr) {
   const hid_t group = H5Gcreate2(file, "xdmf", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (group < 0) throw std::runtime_error(name + ": cannot create group /xdmf");
   const hsize_t n = ps.size();
   bool ok = true;
-  auto vector3 = [&](const char* dset, auto fx, auto fy, auto fz) {
-    std::vector<double> v(3 * n);
-    for (std::size_t k = 0; k < n; ++k) {
-      v[3 * k] = fx(ps[k]);
-      v[3 * k + 1] = fy(ps[k]);
-      v[3 * k + 2] = fz(ps[k]);
-    }
-    const hsize_t dims[2] = {n, 3};
-    ok = ok && H5LTmake_dataset_double(group, dset, 2, dims, v.data()) >= 0;
-  };
-  auto scalar = [&](const char* dset, auto f) {
-    std::vector<double> v(n);
-    for (std::size_t k = 0; k < n; ++k) v[k] = f(ps[k]);
-    const hsize_t dims[1] = {n};
-    ok = ok && H5LTmake_dataset_double(group, dset, 1, dims, v.data()) >= 0;
-  };
-  vector3("coordinates", [](auto& p) { return p.coord_x; }, [](auto& p) { return p.coord_y; }, [](auto&) { return 0.0; });
-  vector3("velocity", [](auto& p) { return p.velocity_x; }, [](auto& p) { return p.velocity_y; }, [](auto&) { return 0.0; });
-  vector3("displacement", [](auto& p) { return p.displacement_x; }, [](auto& p) { return p.displacement_y; },
-          [](auto&) { return 0.0; });
-  scalar("id", [](auto& p) { return static_cast<double>(p.id); });
-  scalar("material_id", [](auto& p) { return static_cast<double>(p.material_id); });
-  scalar("mass", [](auto& p) { return p.mass; });
-  scalar("volume", [](auto& p) { return p.volume; });
-  scalar("stress_xx", [](auto& p) { return p.stress_xx; });
-  scalar("stress_yy", [](auto& p) { return p.stress_yy; });
-  scalar("stress_zz", [](auto& p) { return p.stress_zz; });
-  scalar("tau_xy", [](auto& p) { return p.tau_xy; });
-  scalar("strain_xx", [](auto& p) { return p.strain_xx; });
-  scalar("strain_yy", [](auto& p) { return p.strain_yy; });
-  scalar("gamma_xy", [](auto& p) { return p.gamma_xy; });
-  scalar("epsilon_v", [](auto& p) { return p.epsilon_v; });
+  const std::vector<double> xyz = particle_coordinates(ps);
+  const hsize_t dims3[2] = {n, 3};
+  ok = ok && H5LTmake_dataset_double(group, "coordinates", 2, dims3, xyz.data()) >= 0;
   // Polyvertex connectivity 0..n-1 (explicit, so readers that do not default it still read the grid).
-  {
-    std::vector<std::int64_t> connectivity(n);
-    for (std::size_t k = 0; k < n; ++k) connectivity[k] = static_cast<std::int64_t>(k);
-    const hsize_t dims[1] = {n};
-    ok = ok && H5LTmake_dataset(group, "connectivity", 1, dims, H5T_NATIVE_INT64, connectivity.data()) >= 0;
+  std::vector<std::int64_t> connectivity(n);
+  for (std::size_t k = 0; k < n; ++k) connectivity[k] = static_cast<std::int64_t>(k);
+  const hsize_t dims1[1] = {n};
+  ok = ok && H5LTmake_dataset(group, "connectivity", 1, dims1, H5T_NATIVE_INT64, connectivity.data()) >= 0;
+  for (const auto& f : particle_fields(ps, grid)) {
+    const hsize_t dims[2] = {n, static_cast<hsize_t>(components(f.kind))};
+    const int rank = f.kind == FieldKind::Scalar ? 1 : 2;
+    ok = ok && (f.integer ? H5LTmake_dataset(group, f.name.c_str(), 1, dims, H5T_NATIVE_INT64, f.whole.data())
+                          : H5LTmake_dataset_double(group, f.name.c_str(), rank, dims, f.real.data())) >= 0;
   }
-  // CB-Geo's Mohr-Coulomb keeps pdstrain as its 7th state variable.
-  scalar("pdstrain", [](auto& p) { return p.nstate_vars >= 7 ? p.svars[6] : 0.0; });
+  if (start) {
+    ok = ok && H5LTset_attribute_double(group, ".", "time", &start->time, 1) >= 0;
+    ok = ok && H5LTset_attribute_long_long(group, ".", "step", &start->step, 1) >= 0;
+  }
   H5Gclose(group);
   if (!ok) throw std::runtime_error(name + ": writing the /xdmf datasets failed");
 }
 
-const char* kScalars[] = {"id", "material_id", "mass", "volume", "stress_xx", "stress_yy", "stress_zz", "tau_xy",
-                          "strain_xx", "strain_yy", "gamma_xy", "epsilon_v", "pdstrain"};
-const char* kVectors[] = {"velocity", "displacement"};
+const char* xdmf_attribute_type(FieldKind kind) {
+  return kind == FieldKind::Scalar ? "Scalar" : kind == FieldKind::Vector ? "Vector" : "Tensor6";
+}
+
+/// The fields of the VTK files: the deck's choice plus what identifies and sizes a particle.
+std::vector<ParticleField> vtk_fields(std::span<const ParticleRecord> ps, const Deck& deck) {
+  std::vector<std::string> wanted = deck.output.vtk_fields;
+  for (const char* always : {"id", "material_id", "status", "size", "radius"})
+    if (std::find(wanted.begin(), wanted.end(), always) == wanted.end()) wanted.emplace_back(always);
+  std::vector<ParticleField> chosen;
+  for (auto& f : particle_fields(ps, deck.grid))
+    if (std::find(wanted.begin(), wanted.end(), f.name) != wanted.end()) chosen.push_back(std::move(f));
+  for (const auto& sv : deck.output.vtk_statevars) chosen.push_back(state_variable_field(ps, sv));
+  return chosen;
+}
 
 }  // namespace
 
@@ -164,16 +158,20 @@ fs::path ResultsWriter::particle_file(long long step) const {
   return folder_ / particle_file_name(step, deck_.analysis.nsteps);
 }
 
+bool ResultsWriter::writes_vtk() const { return !deck_.output.vtk_fields.empty() || !deck_.output.vtk_statevars.empty(); }
+
 void ResultsWriter::prepare() {
   if (prepared_) return;
   prepared_ = true;
   fs::create_directories(folder_);
+  write_grid_vtr(folder_ / "grid.vtr", deck_);
   if (!deck_.resumed) return;
   // A resumed run keeps the rows of the run it continues, up to the resume step.
+  const long long last = deck_.first_step - 1;
+  if (auto start = read_start_frame(); start && start->step <= last) frames_.push_back(*start);
   std::ifstream in(folder_ / "series.csv");
   std::string line;
   if (!in || !std::getline(in, line) || line != series_header()) return;
-  const long long last = deck_.first_step - 1;
   while (std::getline(in, line)) {
     std::istringstream fields(line);
     std::string step_s, time_s, field;
@@ -187,11 +185,27 @@ void ResultsWriter::prepare() {
       rows_.push_back(line);
       row_steps_.push_back(step);
       if (step % deck_.output.output_steps == 0 && fs::exists(particle_file(step)))
-        xdmf_.push_back({step, std::stod(time_s), static_cast<std::size_t>(std::stoull(rest[6]))});
+        frames_.push_back({step, std::stod(time_s), static_cast<std::size_t>(std::stoull(rest[6])),
+                           particle_file_name(step, deck_.analysis.nsteps)});
     } catch (const std::exception&) {
       continue;  // a malformed row of an earlier run is dropped
     }
   }
+}
+
+std::optional<XdmfFrame> ResultsWriter::read_start_frame() const {
+  const fs::path file = folder_ / kStartFile;
+  if (!fs::exists(file)) return std::nullopt;
+  const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) return std::nullopt;
+  XdmfFrame frame{0, 0, 0, kStartFile};
+  hsize_t dims[2] = {0, 0};
+  const bool ok = H5LTget_attribute_double(id, "/xdmf", "time", &frame.time) >= 0 &&
+                  H5LTget_attribute_long_long(id, "/xdmf", "step", &frame.step) >= 0 &&
+                  H5LTget_dataset_info(id, "/xdmf/id", dims, nullptr, nullptr) >= 0;
+  H5Fclose(id);
+  frame.count = static_cast<std::size_t>(dims[0]);
+  return ok ? std::optional<XdmfFrame>(frame) : std::nullopt;
 }
 
 void ResultsWriter::add_row(const SeriesRow& row) {
@@ -204,17 +218,59 @@ void ResultsWriter::add_row(const SeriesRow& row) {
   row_steps_.push_back(row.step);
 }
 
+void ResultsWriter::add_frame(const XdmfFrame& frame, std::span<const ParticleRecord> particles) {
+  std::erase_if(frames_, [&](const XdmfFrame& f) { return f.step == frame.step; });
+  frames_.push_back(frame);
+  std::sort(frames_.begin(), frames_.end(), [](const auto& a, const auto& b) { return a.step < b.step; });
+  if (writes_vtk()) {
+    const std::vector<ParticleField> fields = vtk_fields(particles, deck_);
+    write_particles_vtp(folder_ / vtp_name(frame.file), particle_coordinates(particles), fields);
+    std::vector<PvdEntry> entries;
+    for (const auto& f : frames_)
+      if (fs::exists(folder_ / vtp_name(f.file))) entries.push_back({f.time, vtp_name(f.file)});
+    write_pvd(folder_ / "particles.pvd", entries);
+  }
+  write_xdmf();
+}
+
+std::string ResultsWriter::vtp_name(const std::string& h5_name) {
+  return fs::path(h5_name).replace_extension(".vtp").string();
+}
+
+void ResultsWriter::write_start(double time, std::span<const ParticleRecord> particles) {
+  prepare();
+  if (!frames_.empty()) return;  // a resumed run that already has frames keeps its first one
+  const XdmfFrame frame{deck_.first_step - 1, time, particles.size(), kStartFile};
+  const fs::path file = folder_ / kStartFile;
+  // The start state is a view, not a restart point: only the /xdmf datasets (no CB-Geo /table).
+  const fs::path temporary = common::temporary_path_for(file);
+  const hid_t id = H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (id < 0) throw std::runtime_error(file.string() + ": cannot create the file");
+  bool closed = false;
+  try {
+    write_xdmf_datasets(id, particles, deck_.grid, file.string(), &frame);
+    closed = true;
+    if (H5Fclose(id) < 0) throw std::runtime_error(file.string() + ": closing the file failed");
+  } catch (...) {
+    if (!closed) H5Fclose(id);
+    fs::remove(temporary);
+    throw;
+  }
+  common::commit_file(temporary, file);
+  add_frame(frame, particles);
+}
+
 void ResultsWriter::write_particles(long long step, double time, std::span<const ParticleRecord> particles) {
   const fs::path file = particle_file(step);
-  write_particle_table(file, particles, [&](std::int64_t id) { write_xdmf_datasets(static_cast<hid_t>(id), particles, file.string()); });
-  std::erase_if(xdmf_, [&](const XdmfEntry& e) { return e.step == step; });
-  xdmf_.push_back({step, time, particles.size()});
+  write_particle_table(file, particles, [&](std::int64_t id) {
+    write_xdmf_datasets(static_cast<hid_t>(id), particles, deck_.grid, file.string());
+  });
+  add_frame({step, time, particles.size(), file.filename().string()}, particles);
 }
 
 void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles) {
   prepare();
   write_particles(step, time, particles);
-  write_xdmf();
   add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
   write_series();
 }
@@ -228,7 +284,6 @@ void ResultsWriter::write_series_row(long long step, double time, double dt, std
 fs::path ResultsWriter::write_state(long long step, double time, std::span<const ParticleRecord> particles) {
   prepare();
   write_particles(step, time, particles);
-  write_xdmf();
   return particle_file(step);
 }
 
@@ -245,32 +300,24 @@ void ResultsWriter::write_xdmf() const {
   os.precision(12);
   os << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
      << "  <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  auto entries = xdmf_;
-  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.step < b.step; });
-  for (const auto& e : entries) {
-    const std::string h5 = particle_file_name(e.step, deck_.analysis.nsteps);
+  const std::vector<ParticleField> layout = particle_fields({}, deck_.grid);  // names and kinds only
+  for (const auto& e : frames_) {
     const std::string n = std::to_string(e.count);
-    auto item = [&](const std::string& dims, const std::string& dset) {
-      os << "     <DataItem Dimensions=\"" << dims << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5
-         << ":/xdmf/" << dset << "</DataItem>\n";
+    auto item = [&](const std::string& dims, const std::string& dset, bool integer) {
+      os << "     <DataItem Dimensions=\"" << dims << "\" NumberType=\"" << (integer ? "Int" : "Float")
+         << "\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/xdmf/" << dset << "</DataItem>\n";
     };
     os << "   <Grid Name=\"step " << e.step << "\" GridType=\"Uniform\">\n"
        << "    <Time Value=\"" << e.time << "\"/>\n"
-       << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">\n"
-       << "     <DataItem Dimensions=\"" << n << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << h5
-       << ":/xdmf/connectivity</DataItem>\n"
-       << "    </Topology>\n"
-       << "    <Geometry GeometryType=\"XYZ\">\n";
-    item(n + " 3", "coordinates");
+       << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n << "\" NodesPerElement=\"1\">\n";
+    item(n, "connectivity", true);
+    os << "    </Topology>\n    <Geometry GeometryType=\"XYZ\">\n";
+    item(n + " 3", "coordinates", false);
     os << "    </Geometry>\n";
-    for (const char* v : kVectors) {
-      os << "    <Attribute Name=\"" << v << "\" AttributeType=\"Vector\" Center=\"Node\">\n";
-      item(n + " 3", v);
-      os << "    </Attribute>\n";
-    }
-    for (const char* s : kScalars) {
-      os << "    <Attribute Name=\"" << s << "\" AttributeType=\"Scalar\" Center=\"Node\">\n";
-      item(n, s);
+    for (const auto& f : layout) {
+      os << "    <Attribute Name=\"" << f.name << "\" AttributeType=\"" << xdmf_attribute_type(f.kind)
+         << "\" Center=\"Node\">\n";
+      item(f.kind == FieldKind::Scalar ? n : n + " " + std::to_string(components(f.kind)), f.name, f.integer);
       os << "    </Attribute>\n";
     }
     os << "   </Grid>\n";

@@ -3,12 +3,17 @@
 //   particles<step>.h5  CB-Geo's particle table ("/table", resumable by CB-Geo and by mpm) plus, for
 //                       ParaView, plain datasets under "/xdmf" (XDMF cannot address the members of
 //                       a compound dataset, so the fields are repeated as numeric arrays);
-//   particles.xdmf      a temporal collection of Polyvertex grids over those files;
+//   particles.xdmf      a temporal collection of Polyvertex grids over those files, the first frame
+//                       being the start state (initial_state.h5: the generated particles, or the
+//                       state resumed from, e.g. the FEM transfer state);
+//   grid.vtr            the background grid (VTK RectilinearGrid) with its boundary conditions;
+//   particles<step>.vtp + particles.pvd  when post_processing.vtk / vtk_statevars ask for VTK files;
 //   series.csv          one row per output step (and the last step): see SeriesRow.
 // Every file is written to a temporary name and renamed, so none is ever seen half-written.
 #include <Eigen/Core>
 
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -47,6 +52,14 @@ SeriesRow summarize_state(long long step, double time, double dt, std::span<cons
 /// The CSV header of series.csv.
 const std::string& series_header();
 
+/// One frame of particles.xdmf (and particles.pvd): a file of the results folder.
+struct XdmfFrame {
+  long long step;
+  double time;
+  std::size_t count;
+  std::string file;  ///< h5 file name in the results folder
+};
+
 class ResultsWriter {
  public:
   /// Touches nothing on disk until the first write.
@@ -55,6 +68,9 @@ class ResultsWriter {
   std::filesystem::path folder() const { return folder_; }
   std::filesystem::path particle_file(long long step) const;
 
+  /// The state before the first step (the first frame): initial_state.h5 (+ .vtp). A resumed run
+  /// whose folder already holds earlier frames keeps those instead.
+  void write_start(double time, std::span<const ParticleRecord> particles);
   /// An output step: particles<step>.h5, then particles.xdmf and series.csv rewritten.
   void write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles);
   /// A series.csv row only (the last step of a run when it is not an output step).
@@ -63,13 +79,13 @@ class ResultsWriter {
   std::filesystem::path write_state(long long step, double time, std::span<const ParticleRecord> particles);
 
  private:
-  struct XdmfEntry {
-    long long step;
-    double time;
-    std::size_t count;
-  };
+  static constexpr const char* kStartFile = "initial_state.h5";
   void prepare();
   void write_particles(long long step, double time, std::span<const ParticleRecord> particles);
+  void add_frame(const XdmfFrame& frame, std::span<const ParticleRecord> particles);
+  std::optional<XdmfFrame> read_start_frame() const;
+  bool writes_vtk() const;
+  static std::string vtp_name(const std::string& h5_name);
   void add_row(const SeriesRow& row);
   void write_series() const;
   void write_xdmf() const;
@@ -79,7 +95,7 @@ class ResultsWriter {
   bool prepared_ = false;
   std::vector<std::string> rows_;  ///< formatted series.csv rows
   std::vector<long long> row_steps_;
-  std::vector<XdmfEntry> xdmf_;
+  std::vector<XdmfFrame> frames_;  ///< sorted by step
 };
 
 }  // namespace mpm::io
