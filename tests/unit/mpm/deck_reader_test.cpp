@@ -356,11 +356,26 @@ TEST(DeckReaderErrors, UndefinedNodeSetAndMathFunctionsAndVtk) {
   m.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Linear", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
   EXPECT_MESSAGE_HAS(m.error(), "mpm.json: math_functions: unsupported");
   SmallDeck v("vtk");
-  v.deck["post_processing"]["vtk"] = json::parse(R"(["stresses"])");
-  EXPECT_MESSAGE_HAS(v.error(), "post_processing.vtk: unsupported value");
+  v.deck["post_processing"]["vtk"] = json::parse(R"(["stresses", "pressure"])");
+  EXPECT_MESSAGE_HAS(v.error(), "post_processing.vtk: unknown attribute pressure (expected displacements, velocities");
+  SmallDeck sv("vtk_statevars");
+  sv.deck["post_processing"]["vtk_statevars"] = json::parse(R"([{"phase_id": 0, "statevars": ["pdstrain", "kappa"]}])");
+  EXPECT_MESSAGE_HAS(sv.error(), "post_processing.vtk_statevars: expected state variable names among phi, psi");
+  SmallDeck ph("vtk_phase");
+  ph.deck["post_processing"]["vtk_statevars"] = json::parse(R"([{"phase_id": 1, "statevars": ["pdstrain"]}])");
+  EXPECT_MESSAGE_HAS(ph.error(), "phase_id: expected 0 (single-phase MPM)");
   SmallDeck e("vtk_empty");
   e.deck["post_processing"]["vtk"] = json::array();
   EXPECT_EQ(e.error(), "");
+}
+
+TEST(DeckReader, VtkKeysTakeCbGeoNamesAndBothStateVariableForms) {
+  SmallDeck d("vtk_ok");
+  d.deck["post_processing"]["vtk"] = json::parse(R"(["stresses", "velocities", "pdstrain", "stresses"])");
+  d.deck["post_processing"]["vtk_statevars"] = json::parse(R"(["pdstrain", {"phase_id": 0, "statevars": ["phi"]}])");
+  const mpm::io::Deck deck = d.read();
+  EXPECT_EQ(deck.output.vtk_fields, (std::vector<std::string>{"stress", "velocity", "pdstrain"}));
+  EXPECT_EQ(deck.output.vtk_statevars, (std::vector<std::string>{"pdstrain", "phi"}));
 }
 
 TEST(DeckReaderErrors, WrongTypesAreNamed) {

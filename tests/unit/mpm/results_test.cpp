@@ -6,10 +6,14 @@
 #include <hdf5_hl.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <fstream>
 #include <sstream>
 
+#include "mpm/io/particle_fields.hpp"
 #include "mpm/io/results.hpp"
 #include "support/tolerance.hpp"
 
@@ -147,5 +151,83 @@ TEST(Results, WritesParticleFilesXdmfAndSeries) {
   const std::string xdmf2 = slurp(folder / "particles.xdmf");
   EXPECT_NE(xdmf2.find("particles000.h5"), std::string::npos);
   EXPECT_NE(xdmf2.find("particles100.h5"), std::string::npos);
+  fs::remove_all(deck.working_dir);
+}
+
+TEST(ParticleFields, TensorsInParaViewOrderSizesAndStateVariables) {
+  auto ps = four_particles();
+  ps[1].stress_xx = 1, ps[1].stress_yy = 2, ps[1].stress_zz = 3, ps[1].tau_xy = 4;
+  ps[1].gamma_xy = 0.2;
+  ps[1].nsize_x = ps[1].nsize_y = 0.5;  // 4 x 4 particles per 1 m cell: 0.25 m each
+  ps[2].nstate_vars = 7;                // a Mohr-Coulomb particle: phi = 30 degrees, c = 5 kPa
+  ps[2].svars[0] = std::numbers::pi / 6, ps[2].svars[2] = 5e3, ps[2].svars[6] = 0.01;
+  const auto fields = mpm::io::particle_fields(ps, unit_grid());
+  auto field = [&](const std::string& name) {
+    const auto it = std::find_if(fields.begin(), fields.end(), [&](const auto& f) { return f.name == name; });
+    EXPECT_NE(it, fields.end()) << name;
+    return *it;
+  };
+  const auto stress = field("stress");
+  ASSERT_EQ(stress.kind, mpm::io::FieldKind::Tensor6);
+  EXPECT_EQ(std::vector<double>(stress.real.begin() + 6, stress.real.begin() + 12), (std::vector<double>{1, 2, 3, 4, 0, 0}));
+  EXPECT_EQ(field("strain").real[6 + 3], 0.1);  // tensorial shear = gamma / 2
+  EXPECT_EQ(field("size").real[3], 0.25);
+  EXPECT_EQ(field("size").real[0], std::sqrt(0.001));  // no nsize: the side of the particle's area
+  EXPECT_EQ(field("radius").real[1], 0.125);
+  EXPECT_CLOSE(field("friction").real[2], 30.0, 1e-12, 0.0);
+  EXPECT_EQ(field("friction").real[1], 0.0);  // no state variables: 0
+  EXPECT_EQ(field("cohesion").real[2], 5e3);
+  EXPECT_EQ(field("pdstrain").real[2], 0.01);
+  const auto id = field("id");
+  EXPECT_TRUE(id.integer);
+  EXPECT_EQ(id.whole, (std::vector<std::int64_t>{0, 1, 2, 3}));
+  EXPECT_EQ(mpm::io::state_variable_field(ps, "cohesion").real[2], 5e3);
+}
+
+TEST(Results, StartFrameGridAndVtkFiles) {
+  mpm::io::Deck deck;
+  deck.working_dir = fs::temp_directory_path() / ("geoflow_results_vtk_" + std::to_string(::getpid()));
+  fs::remove_all(deck.working_dir);
+  deck.grid = unit_grid();
+  deck.analysis.nsteps = 101;
+  deck.output.path = "results/";
+  deck.output.uuid = "run";
+  deck.output.output_steps = 50;
+  deck.output.vtk_fields = {"stress"};
+  deck.output.vtk_statevars = {"pdstrain"};
+  deck.velocity_constraints.push_back({{0, 1, 2}, 1, 0.0});
+  const auto ps = four_particles();
+  mpm::io::ResultsWriter w(deck);
+  w.write_start(0.0, ps);
+  w.write_output(0, 0.001, 0.001, ps);
+  const fs::path folder = deck.working_dir / "results/run";
+  for (const char* f : {"initial_state.h5", "initial_state.vtp", "particles000.vtp", "particles.pvd", "grid.vtr"})
+    EXPECT_TRUE(fs::exists(folder / f)) << f;
+  const std::string xdmf = slurp(folder / "particles.xdmf");
+  const auto start = xdmf.find("initial_state.h5:/xdmf/coordinates"), first = xdmf.find("particles000.h5");
+  EXPECT_NE(start, std::string::npos);
+  EXPECT_LT(start, first);  // the start state is the first frame
+  EXPECT_NE(xdmf.find("AttributeType=\"Tensor6\""), std::string::npos);
+  EXPECT_NE(xdmf.find("NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">initial_state.h5:/xdmf/id"), std::string::npos);
+  const std::string pvd = slurp(folder / "particles.pvd");
+  EXPECT_NE(pvd.find("timestep=\"0\" group=\"\" part=\"0\" file=\"initial_state.vtp\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("file=\"particles000.vtp\""), std::string::npos);
+  const std::string vtp = slurp(folder / "particles000.vtp");
+  for (const char* a : {"Name=\"stress\" NumberOfComponents=\"6\"", "Name=\"pdstrain\"", "Name=\"id\"", "Name=\"radius\""})
+    EXPECT_NE(vtp.find(a), std::string::npos) << a;
+  EXPECT_EQ(vtp.find("Name=\"velocity\""), std::string::npos);  // not asked for
+  const std::string grid = slurp(folder / "grid.vtr");
+  EXPECT_NE(grid.find("WholeExtent=\"0 4 0 3 0 0\""), std::string::npos);
+
+  // A resumed run with earlier frames keeps the earlier start frame (its step and time are in the file).
+  deck.resumed = true;
+  deck.first_step = 1;
+  std::ofstream(folder / "series.csv") << mpm::io::series_header() << "\n0,0.001,1,1,0,0,0,0,4,0.001,0\n";
+  mpm::io::ResultsWriter resumed(deck);
+  resumed.write_start(0.002, ps);
+  resumed.write_output(50, 0.051, 0.001, ps);
+  const std::string xdmf2 = slurp(folder / "particles.xdmf");
+  EXPECT_NE(xdmf2.find("<Time Value=\"0\"/>"), std::string::npos) << xdmf2.substr(0, 400);
+  EXPECT_EQ(xdmf2.find("<Time Value=\"0.002\"/>"), std::string::npos);
   fs::remove_all(deck.working_dir);
 }
