@@ -19,6 +19,7 @@ void Context::wipe() {
   wipe_analysis();
   domain.clear();
   materials.clear();
+  uniaxial_materials.clear();
   current_pattern = nullptr;
 }
 
