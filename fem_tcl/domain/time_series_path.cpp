@@ -9,10 +9,12 @@ namespace fem::domain {
 
 namespace {
 
-void warn_past_end(bool& warned, int tag, double t, double t_end) {
-  if (warned) return;
+/// Once per series, and only when it matters: a record that ends at 0 returns the same 0 either way.
+void warn_past_end(bool& warned, int tag, double t, double t_end, double last_value) {
+  if (warned || last_value == 0.0) return;
   warned = true;
   std::cerr << "WARNING timeSeries Path " << tag << ": queried at t = " << t << ", past its end (t = " << t_end
+            << ", last value " << last_value
             << "); it returns 0 from there on, as OpenSees (give -useLast to hold the last value)\n";
 }
 
@@ -28,7 +30,7 @@ double PathSeries::factor(double t) const {
   const double k = std::floor(s);
   if (k + 1.0 >= static_cast<double>(values_.size())) {
     if (use_last_) return c_ * values_.back();
-    warn_past_end(warned_, tag(), t, end_time());
+    warn_past_end(warned_, tag(), t, end_time(), c_ * values_.back());
     return 0.0;
   }
   const auto i = static_cast<std::size_t>(k);
@@ -46,7 +48,7 @@ double PathTimeSeries::factor(double t) const {
   if (t == t1) return c_ * values_[loc_];
   const auto past_end = [&] {
     if (use_last_) return c_ * values_[n - 1];
-    warn_past_end(warned_, tag(), t, times_[n - 1]);
+    warn_past_end(warned_, tag(), t, times_[n - 1], c_ * values_[n - 1]);
     return 0.0;
   };
   if (t > t1 && loc_ == n - 1) return past_end();

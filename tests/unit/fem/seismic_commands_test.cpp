@@ -53,6 +53,11 @@ TEST(PathSeries, DtSeriesInterpolatesAndEndsOneSampleEarlyUnlessUseLast) {
   const std::string warning = testing::internal::GetCapturedStderr();
   EXPECT_NE(warning.find("WARNING timeSeries Path 1: queried at t = 0.2, past its end"), std::string::npos) << warning;
   EXPECT_EQ(warning.find("WARNING", 10), std::string::npos) << "warned once: " << warning;
+  // a record that ends at 0 gives the same 0 either way: no warning
+  interp.eval("timeSeries Path 9 -dt 0.1 -values {0 1 0}");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(series_at(interp, 9, 3.0), 0.0);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
   EXPECT_CLOSE(series_at(interp, 2, 0.2), 4.0, 1e-15, 0.0);
   EXPECT_CLOSE(series_at(interp, 2, 9.0), 4.0, 1e-15, 0.0);
   EXPECT_CLOSE(series_at(interp, 2, 0.05), 1.0, 1e-12, 0.0);
