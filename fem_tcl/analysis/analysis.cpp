@@ -92,8 +92,9 @@ void Analysis::setup() {
   element_eq_.clear();
   for (const auto& [tag, e] : domain_.elements()) {
     elements_.push_back(e.get());
-    std::array<int, 8> ids{};
-    for (int a = 0; a < 4; ++a) {
+    std::array<int, 8> ids;
+    ids.fill(-1);
+    for (int a = 0; a < e->num_nodes(); ++a) {
       const int ni = index[e->nodes()[a]];
       ids[2 * a] = eq_[2 * ni];
       ids[2 * a + 1] = eq_[2 * ni + 1];
@@ -173,6 +174,10 @@ void Analysis::form_tangent() {
       }
       const double cm = c3_ + c2_ * f.alpha_m;
       if (cm != 0.0) ke.diagonal() += cm * el.lumped_mass();
+      // rate-dependent materials (zeroLength + Viscous): OpenSees getDamp
+      if (c2_ != 0.0) {
+        if (const Matrix8* c = el.damping_tangent()) ke.noalias() += c2_ * *c;
+      }
     }
     const auto& pos = element_pos_[e];
     const double* k = ke.data();
@@ -231,8 +236,8 @@ void Analysis::form_unbalance() {
     f.noalias() = el.resisting_force();
     if (dynamic) {
       const Vector8& m = el.lumped_mass();
-      Vector8 a, v;
-      for (int i = 0; i < 4; ++i) {
+      Vector8 a = Vector8::Zero(), v;
+      for (int i = 0; i < el.num_nodes(); ++i) {
         a[2 * i] = el.nodes()[i]->accel[0];
         a[2 * i + 1] = el.nodes()[i]->accel[1];
       }

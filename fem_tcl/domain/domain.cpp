@@ -106,6 +106,7 @@ MeshQuality Domain::mesh_quality() const {
   MeshQuality q;
   bool first = true;
   for (const auto& [tag, e] : elements_) {
+    if (!e->is_continuum()) continue;  // zero-length springs have no area
     const double d = e->min_corner_jacobian();
     const double r = e->min_corner_jacobian_ratio();
     if (first || d < q.min_det_j) { q.min_det_j = d; q.min_det_j_element = tag; }
@@ -118,6 +119,7 @@ MeshQuality Domain::mesh_quality() const {
 void Domain::check_mesh_quality() {
   if (elements_.empty() || (warned_inverted_ && (warned_ratio_ || mesh_warn_ratio_ <= 0.0))) return;
   const MeshQuality q = mesh_quality();
+  if (q.min_det_j_element == 0) return;  // no continuum element
   if (!warned_ratio_ && mesh_warn_ratio_ > 0.0 && q.min_ratio < mesh_warn_ratio_ && q.min_det_j > 0.0) {
     warned_ratio_ = true;
     std::cerr << "WARNING mesh quality: at t = " << committed_time_ << " element " << q.min_ratio_element
@@ -170,7 +172,7 @@ void Domain::compute_reactions() {
   for (auto& [tag, n] : nodes_) n->reaction = -n->load;
   for (auto& [tag, e] : elements_) {
     const Vector8& f = e->resisting_force();
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < e->num_nodes(); ++i) {
       e->nodes()[i]->reaction[0] += f[2 * i];
       e->nodes()[i]->reaction[1] += f[2 * i + 1];
     }

@@ -1,7 +1,9 @@
 #pragma once
-// The 4-node, 2-dof-per-node element protocol (OpenSees Element, in this project's style): trial / commit /
-// revert, tangent, initial stiffness, lumped mass, resisting force, element loads and Rayleigh damping.
-// Dof order (u1x u1y u2x u2y u3x u3y u4x u4y), nodes counter-clockwise.
+// The 2-dof-per-node element protocol (OpenSees Element, in this project's style): trial / commit /
+// revert, tangent, initial stiffness, damping tangent, lumped mass, resisting force, element loads and
+// Rayleigh damping. Up to 4 nodes: continuum quads use all 4 (counter-clockwise), two-node elements
+// (zeroLength) the first 2, and their matrices and vectors fill the leading 2 x num_nodes() dofs of the
+// fixed 8-dof storage (the rest stays zero). Dof order (u1x u1y u2x u2y u3x u3y u4x u4y).
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
@@ -32,10 +34,16 @@ struct RayleighFactors {
 class Element {
  public:
   Element(int tag, std::array<Node*, 4> nodes) : tag_(tag), nodes_(nodes) {}
+  /// A two-node element (the last two node slots stay empty).
+  Element(int tag, Node* i, Node* j) : tag_(tag), nodes_{i, j, nullptr, nullptr}, num_nodes_(2) {}
   virtual ~Element() = default;
 
   int tag() const { return tag_; }
+  /// The node slots; only the first num_nodes() are set.
   const std::array<Node*, 4>& nodes() const { return nodes_; }
+  int num_nodes() const { return num_nodes_; }
+  /// A 4-node continuum element (mesh-quality measures apply), as opposed to a zero-length spring.
+  bool is_continuum() const { return num_nodes_ == 4; }
   virtual std::string type_name() const = 0;
 
   /// Sets the materials' trial strains from the nodes' trial displacements.
@@ -45,6 +53,12 @@ class Element {
   /// Stiffness from the materials' initial (elastic) tangents (fem_tcl's `-elasticTangent` algorithms); the
   /// same as initial_stiffness() except where that follows an OpenSees quirk (SSPquad: current tangent).
   virtual const Matrix8& elastic_stiffness() { return initial_stiffness(); }
+  /// The element's own damping tangent d(resisting force)/d(velocity), without Rayleigh terms (OpenSees
+  /// getDamp of elements whose materials are rate dependent, e.g. zeroLength with a Viscous material);
+  /// nullptr when the element has none.
+  virtual const Matrix8* damping_tangent() { return nullptr; }
+  /// Whether the `rayleigh` factors apply to this element (zeroLength: only with -doRayleigh 1).
+  virtual bool rayleigh_damped() const { return true; }
   /// Diagonal of the lumped mass matrix.
   virtual const Vector8& lumped_mass() = 0;
   /// Internal force minus body forces minus element loads (OpenSees getResistingForce), no inertia/damping.
@@ -70,7 +84,7 @@ class Element {
 
   /// `rayleigh` command: stores the factors; betaKc takes the tangent of this moment (OpenSees Element).
   void set_rayleigh(const RayleighFactors& f) {
-    rayleigh_ = f;
+    rayleigh_ = rayleigh_damped() ? f : RayleighFactors{};
     if (f.beta_kc != 0.0) committed_tangent_ = tangent_stiffness();
   }
   const RayleighFactors& rayleigh() const { return rayleigh_; }
@@ -123,13 +137,13 @@ class Element {
 
   /// Element displacement vector from the nodes' trial displacements.
   Vector8 trial_displacement() const {
-    Vector8 u;
-    for (int i = 0; i < 4; ++i) { u[2 * i] = nodes_[i]->disp[0]; u[2 * i + 1] = nodes_[i]->disp[1]; }
+    Vector8 u = Vector8::Zero();
+    for (int i = 0; i < num_nodes_; ++i) { u[2 * i] = nodes_[i]->disp[0]; u[2 * i + 1] = nodes_[i]->disp[1]; }
     return u;
   }
   Vector8 trial_velocity() const {
-    Vector8 v;
-    for (int i = 0; i < 4; ++i) { v[2 * i] = nodes_[i]->vel[0]; v[2 * i + 1] = nodes_[i]->vel[1]; }
+    Vector8 v = Vector8::Zero();
+    for (int i = 0; i < num_nodes_; ++i) { v[2 * i] = nodes_[i]->vel[0]; v[2 * i + 1] = nodes_[i]->vel[1]; }
     return v;
   }
 
@@ -141,6 +155,7 @@ class Element {
  private:
   int tag_;
   std::array<Node*, 4> nodes_;
+  int num_nodes_ = 4;
   Vector8 load_ = Vector8::Zero();
   bool self_weight_applied_ = false;
   Vector2 applied_body_ = Vector2::Zero();

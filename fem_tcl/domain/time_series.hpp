@@ -1,6 +1,8 @@
 #pragma once
-// Load factor as a function of (pseudo-)time: OpenSees ConstantSeries, LinearSeries, PathSeries / PathTimeSeries.
+// Load factor as a function of (pseudo-)time: OpenSees ConstantSeries and LinearSeries here; Path in
+// time_series_path.hpp; Trig, Rectangular and Pulse in time_series_periodic.hpp.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "common/command_args.hpp"
@@ -37,21 +39,7 @@ class LinearSeries final : public TimeSeries {
   double c_;
 };
 
-/// Piecewise-linear interpolation of (time, value) pairs, scaled by cfactor; 0 outside [t_first, t_last]
-/// (quirk 11). Equally spaced values (-dt) start at startTime.
-class PathSeries final : public TimeSeries {
- public:
-  PathSeries(int tag, std::vector<double> times, std::vector<double> values, double cfactor);
-  double factor(double t) const override;
-
- private:
-  std::vector<double> times_;
-  std::vector<double> values_;
-  double c_;
-  mutable std::size_t last_ = 0;  ///< interval hint (monotone time in analyses)
-};
-
-/// `timeSeries Constant|Linear|Path tag ...` (args start at the type word).
+/// `timeSeries Constant|Linear|Path|Series|Trig|Sine|Rectangular|Pulse tag ...` (args start at the type word).
 std::shared_ptr<TimeSeries> parse_time_series(common::CommandArgs& args);
 
 }  // namespace fem::domain

@@ -4,6 +4,7 @@
 
 #include "fem_tcl/elements/four_node_quad.hpp"
 #include "fem_tcl/elements/ssp_quad.hpp"
+#include "fem_tcl/elements/zero_length.hpp"
 
 namespace fem::elements {
 
@@ -17,6 +18,10 @@ constexpr std::array kParsers{
     ElementParserEntry{"FourNodeQuad",
                        "element FourNodeQuad tag i j k l thick PlaneStrain|PlaneStress matTag <p rho b1 b2>",
                        parse_four_node_quad},
+    ElementParserEntry{"zeroLength",
+                       "element zeroLength tag iNode jNode -mat m1 .. -dir d1 .. <-orient x1 x2 x3 <yp1 yp2 yp3>> "
+                       "<-doRayleigh <0|1>>",
+                       parse_zero_length},
 };
 }  // namespace
 
@@ -32,6 +37,12 @@ const ElementParserEntry* find_element_parser(std::string_view type) {
 const materials::NDMaterial& ElementBuildContext::material(common::CommandArgs& args, int tag) const {
   auto it = materials.find(tag);
   if (it == materials.end()) args.fail("nDMaterial " + std::to_string(tag) + " does not exist");
+  return *it->second;
+}
+
+const materials::UniaxialMaterial& ElementBuildContext::uniaxial_material(common::CommandArgs& args, int tag) const {
+  const auto it = uniaxial ? uniaxial->find(tag) : materials::UniaxialMaterialMap::const_iterator{};
+  if (!uniaxial || it == uniaxial->end()) args.fail("uniaxialMaterial " + std::to_string(tag) + " does not exist");
   return *it->second;
 }
 

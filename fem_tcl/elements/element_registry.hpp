@@ -9,6 +9,7 @@
 #include "common/command_args.hpp"
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
+#include "fem_tcl/materials/uniaxial_material.hpp"
 
 namespace fem::elements {
 
@@ -16,9 +17,13 @@ namespace fem::elements {
 struct ElementBuildContext {
   domain::Domain& domain;
   const std::map<int, std::unique_ptr<materials::NDMaterial>>& materials;
+  /// `uniaxialMaterial`s (zeroLength); null when the caller has none.
+  const materials::UniaxialMaterialMap* uniaxial = nullptr;
 
   /// Throws common::InputError naming `args`' command when the material does not exist.
   const materials::NDMaterial& material(common::CommandArgs& args, int tag) const;
+  /// Throws common::InputError naming `args`' command when the uniaxialMaterial does not exist.
+  const materials::UniaxialMaterial& uniaxial_material(common::CommandArgs& args, int tag) const;
   /// The four nodes; throws for a missing or repeated node tag.
   std::array<domain::Node*, 4> quad_nodes(common::CommandArgs& args, const std::array<int, 4>& tags) const;
 };

@@ -32,6 +32,8 @@ std::string cmd_fix_y(Context&, common::CommandArgs&);
 std::string cmd_equal_dof(Context&, common::CommandArgs&);
 std::string cmd_mass(Context&, common::CommandArgs&);
 std::string cmd_nd_material(Context&, common::CommandArgs&);
+// uniaxial materials (uniaxial_commands.cpp)
+std::string cmd_uniaxial_material(Context&, common::CommandArgs&);
 std::string cmd_element(Context&, common::CommandArgs&);
 std::string cmd_time_series(Context&, common::CommandArgs&);
 std::string cmd_pattern(Context&, common::CommandArgs&);
@@ -76,6 +78,9 @@ std::string cmd_recorder(Context&, common::CommandArgs&);
 std::string cmd_print(Context&, common::CommandArgs&);
 std::string cmd_min_jacobian(Context&, common::CommandArgs&);
 std::string cmd_mesh_quality(Context&, common::CommandArgs&);
+
+/// A pattern's series argument: a timeSeries tag or an inline {type <tag> options..} (series_argument.cpp).
+std::shared_ptr<domain::TimeSeries> series_argument(Context& ctx, common::CommandArgs& args, const std::string& word);
 
 /// OpenSees' query format: every value as "%35.20f", joined with no separator (quirk 9).
 std::string format_values(const double* values, std::size_t n);

@@ -10,6 +10,7 @@
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/domain/time_series.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
+#include "fem_tcl/materials/uniaxial_material.hpp"
 
 struct Tcl_Interp;
 
@@ -35,6 +36,7 @@ struct Context {
   bool model_defined = false;
   domain::Domain domain;
   std::map<int, std::unique_ptr<materials::NDMaterial>> materials;
+  materials::UniaxialMaterialMap uniaxial_materials;
   std::map<int, std::shared_ptr<domain::TimeSeries>> time_series;
   AnalysisChain chain;
   std::unique_ptr<analysis::Analysis> analysis;  ///< rebuilt when the chain changes

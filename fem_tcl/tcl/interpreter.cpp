@@ -19,6 +19,7 @@ void Context::wipe() {
   wipe_analysis();
   domain.clear();
   materials.clear();
+  uniaxial_materials.clear();
   current_pattern = nullptr;
 }
 
@@ -166,7 +167,7 @@ int run_main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) {
     std::cout << "usage: fem_tcl [script.tcl [args..]]\n"
-                 "  Runs an OpenSees-compatible Tcl script (2D solids: SSPquad, quad; ElasticIsotropic and the\n"
+                 "  Runs an OpenSees-compatible Tcl script (2D solids: SSPquad, quad, zeroLength; ElasticIsotropic and the\n"
                  "  registered nDMaterials; static and transient analyses; Node/Element recorders).\n"
                  "  With no script, the commands are read from standard input.\n"
                  "  The script's arguments are in $argv ($argc of them); $argv0 is the script's path.\n"

@@ -188,7 +188,7 @@ std::string cmd_element(Context& ctx, common::CommandArgs& args) {
   }
   const std::vector<std::string> words = remaining_words(args);
   common::CommandArgs sub("element " + type + (words.empty() ? "" : " " + words[0]), std::string(entry->usage), words);
-  elements::ElementBuildContext build{ctx.domain, ctx.materials};
+  elements::ElementBuildContext build{ctx.domain, ctx.materials, &ctx.uniaxial_materials};
   std::unique_ptr<domain::Element> element;
   try {
     element = entry->parse(sub, build);
@@ -214,19 +214,14 @@ std::string cmd_time_series(Context& ctx, common::CommandArgs& args) {
 std::string cmd_pattern(Context& ctx, common::CommandArgs& args) {
   require_model(ctx, args);
   const std::string type = args.word("type (Plain or UniformExcitation)");
-  const auto series_for = [&](int tag) {
-    auto it = ctx.time_series.find(tag);
-    if (it == ctx.time_series.end()) args.fail("timeSeries " + std::to_string(tag) + " does not exist");
-    return it->second;
-  };
   if (type == "Plain") {
     const int tag = args.integer("tag");
-    const int ts = args.integer("tsTag");
+    const std::string ts = args.word("tsTag or {inline series}");
     double fact = 1.0;
     if (args.flag("-fact") || args.flag("-factor")) fact = args.number("-fact value");
     const std::string body = args.word("body {...}");
     args.expect_end();
-    auto pattern = std::make_unique<domain::PlainPattern>(tag, series_for(ts), fact);
+    auto pattern = std::make_unique<domain::PlainPattern>(tag, series_argument(ctx, args, ts), fact);
     domain::LoadPattern* raw = pattern.get();
     ctx.domain.add_pattern(std::move(pattern), args.command());
     struct Restore {
@@ -242,18 +237,28 @@ std::string cmd_pattern(Context& ctx, common::CommandArgs& args) {
     const int tag = args.integer("tag");
     const int dir = args.integer("dir");
     if (dir < 1 || dir > 2) args.fail("expected dir 1 or 2, got " + std::to_string(dir));
-    int ts = -1;
-    double fact = 1.0;
+    std::shared_ptr<domain::TimeSeries> accel;
+    double fact = 1.0, vel0 = 0.0;
     while (!args.empty()) {
-      if (args.flag("-accel")) ts = args.integer("-accel tsTag");
-      else if (args.flag("-fact") || args.flag("-factor")) fact = args.number("-fact value");
-      else if (args.flag("-vel0")) {
-        if (args.number("-vel0 value") != 0.0) args.fail("-vel0 other than 0 is not supported");
+      if (args.flag("-accel") || args.flag("-acceleration")) accel = series_argument(ctx, args, args.word("-accel tsTag"));
+      else if (args.flag("-fact") || args.flag("-factor")) fact = finite(args, "-fact value");
+      else if (args.flag("-vel0") || args.flag("-initialVel")) vel0 = finite(args, "-vel0 value");
+      else if (args.peek() == "-vel" || args.peek() == "-disp" || args.peek() == "-int") {
+        args.fail("option '" + args.peek() + "' is not supported (give the ground acceleration with -accel)");
       } else args.fail("unknown option '" + args.peek() + "'");
     }
-    if (ts < 0) args.fail("missing -accel tsTag");
-    ctx.domain.add_pattern(std::make_unique<domain::UniformExcitation>(tag, dir - 1, series_for(ts), fact),
+    if (!accel) args.fail("missing -accel tsTag");
+    ctx.domain.add_pattern(std::make_unique<domain::UniformExcitation>(tag, dir - 1, std::move(accel), fact),
                            args.command());
+    // OpenSees UniformExcitation::setDomain: every node not fixed in `dir` starts with velocity vel0
+    // (relative to the ground), set as its trial and committed velocity.
+    if (vel0 != 0.0) {
+      for (const auto& [ntag, n] : ctx.domain.nodes()) {
+        if (n->fixed[dir - 1]) continue;
+        n->vel[dir - 1] = vel0;
+        n->committed_vel[dir - 1] = vel0;
+      }
+    }
     return {};
   }
   args.fail("unknown pattern type '" + type + "' (Plain or UniformExcitation)");

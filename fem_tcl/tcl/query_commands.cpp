@@ -85,7 +85,7 @@ std::string cmd_ele_nodes(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   const domain::Element& e = ctx.domain.element(tag, args.command());
   std::string out;
-  for (const domain::Node* n : e.nodes()) append_word(out, std::to_string(n->tag));
+  for (int a = 0; a < e.num_nodes(); ++a) append_word(out, std::to_string(e.nodes()[a]->tag));
   return out;
 }
 
@@ -169,7 +169,8 @@ void write_json_list(std::ostream& os, const char* indent, const std::vector<std
 }
 
 void write_model_json(Context& ctx, std::ostream& os) {
-  std::vector<std::string> materials, nodes, elements;
+  std::vector<std::string> uniaxial, materials, nodes, elements;
+  for (const auto& [tag, m] : ctx.uniaxial_materials) uniaxial.push_back(m->to_json().dump());
   for (const auto& [tag, m] : ctx.materials) materials.push_back(m->to_json().dump());
   for (const auto& [tag, n] : ctx.domain.nodes()) {
     nlohmann::ordered_json j;
@@ -184,7 +185,7 @@ void write_model_json(Context& ctx, std::ostream& os) {
   os << "\t\"BIM\": \"unknown\",\n\t\"description\": \"\",\n\t\"engineer\": \"\",\n";
   os << "\t\"units\": {\n\t\t\"force\": \"\",\n\t\t\"length\": \"\",\n\t\t\"time\": \"\",\n\t\t\"temperature\": \"\"\n\t},\n";
   os << "\t\"properties\": {\n\t\t\"uniaxialMaterials\": ";
-  write_json_list(os, "\t\t", {});
+  write_json_list(os, "\t\t", uniaxial);
   os << ",\n\t\t\"ndMaterials\": ";
   write_json_list(os, "\t\t", materials);
   os << ",\n\t\t\"sections\": ";
