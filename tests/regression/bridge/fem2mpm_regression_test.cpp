@@ -261,6 +261,40 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
   expect_clean_failure(model + disp + stress + " --recovery rbf", dir, {"--recovery", "rbf"});
 }
 
+// The OpenSees reference model with a constraints block added (fem_tcl's layout): a fixed base (nodes 1-7)
+// is carried over, an interior single point (node 17, x = 1.5 m, y = 1 m) cannot be and is a warning naming
+// it (the run goes on, exit 0); a malformed entry is a one-line error naming the file, line and key.
+TEST(Fem2mpmRegression, SupportsTheGridCannotCarryWarnAndMalformedOnesFail) {
+  const fs::path dir = scratch_dir("supports");
+  std::string text = slurp(kCase / "model.json");
+  const std::string tail = "\t}\n}\n}\n";
+  ASSERT_EQ(text.substr(text.size() - tail.size()), tail);
+  auto with_fixes = [&](const std::string& fixes) {
+    return text.substr(0, text.size() - tail.size()) + "\t},\n\t\"constraints\": {\n\t\t\"fix\": [\n" + fixes +
+           "\t\t],\n\t\t\"equalDOF\": [\n\t\t]\n\t}\n}\n}\n";
+  };
+  std::string fixes;
+  for (int n = 1; n <= 7; ++n) fixes += "\t\t\t{\"node\": " + std::to_string(n) + ", \"fix\": [1, 1]},\n";
+  std::ofstream(dir / "model.json") << with_fixes(fixes + "\t\t\t{\"node\": 17, \"fix\": [1, 0]}\n");
+  const std::string args = "--units kN --model " + (dir / "model.json").string() + " --disp " + (kCase / "disp.out").string() +
+                           " --stress " + (kCase / "stress.out").string();
+  const Result r = run(args + " --out " + (dir / "deck").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("fem2mpm: warning: FEM supports at nodes 17 cannot be represented on the MPM grid (a single point"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("base at y = 0: friction mu = 0.4 (y-velocity 0, Coulomb friction) [FEM support]"), std::string::npos) << r.out;
+  // Free sides: no wall, the runout area 3 model widths (13.5 m) beyond each.
+  EXPECT_NE(r.out.find("left wall at x = -13.5: none (free face) [FEM side without support]"), std::string::npos) << r.out;
+  const auto report = nlohmann::json::parse(slurp(dir / "deck/report.json"));
+  bool named = false;
+  for (const auto& w : report["warnings"]) named = named || w.get<std::string>().find("nodes 17 cannot") != std::string::npos;
+  EXPECT_TRUE(named) << report["warnings"].dump();
+
+  fs::remove_all(dir / "deck");
+  std::ofstream(dir / "model.json") << with_fixes(fixes + "\t\t\t{\"node\": 17, \"fix\": \"x\"}\n");
+  expect_clean_failure(args, dir, {"model.json:", ": constraints.fix: expected {\"node\": tag, \"fix\": [0 or 1, 0 or 1]}"});
+}
+
 // The whole chain on a small slumping column (small_column.tcl): fem_tcl -> fem2mpm -> mpm.
 // Golden numbers: the column's mass rho W H = 1925 kg/m3 x 8 m x 6 m = 92400 kg/m (analytical); FEM and
 // particle momentum agree to round-off (exact by construction); mpm conserves the particles' mass and
