@@ -11,6 +11,8 @@
 #include <ostream>
 #include <thread>
 
+#include "bridge/boundary_extraction.hpp"
+#include "bridge/deck_boundaries.hpp"
 #include "bridge/fem_model.hpp"
 #include "bridge/fem_state_reader.hpp"
 #include "bridge/mpm_deck.hpp"
@@ -35,7 +37,10 @@ struct CliOptions {
   std::string recovery = "idw";
   std::string volume_split = "jacobian";
   std::string cell_type = "ED2Q16G";
-  std::string left_wall = "roller", right_wall = "roller", base = "friction";
+  std::vector<std::string> material;           ///< --material NAME:key=value,... (per FEM material)
+  /// Unset: from the FEM supports in the model file, else roller, roller, friction.
+  std::optional<std::string> left_wall, right_wall, base;
+  bool ignore_supports = false;
   std::vector<double> extent;
   DeckOptions deck;
   bool quiet = false;
@@ -47,6 +52,13 @@ Wall parse_wall(const std::string& s, const char* option) {
   if (s == "fixed") return Wall::Fixed;
   if (s == "none") return Wall::None;
   throw common::InputError(option, "expected roller, fixed or none, got '" + s + "'");
+}
+
+Base parse_base(const std::string& s) {
+  if (s == "friction") return Base::Friction;
+  if (s == "roller") return Base::Roller;
+  if (s == "fixed") return Base::Fixed;
+  throw common::InputError("--base", "expected friction, roller or fixed, got '" + s + "'");
 }
 
 std::string fmt(double v, int precision = 6) { return common::number_text(v, precision); }
@@ -69,7 +81,8 @@ struct Timing {
 };
 
 void print_report(std::ostream& out, const AssembledState& a, const TransferReport& r, const DeckText& d,
-                  const CliOptions& o, const std::filesystem::path& outdir, const Timing& t) {
+                  const CliOptions& o, const std::vector<BoundaryChoice>& boundaries, const std::filesystem::path& outdir,
+                  const Timing& t) {
   out << "fem2mpm: FEM state at t = " << fmt(a.state.time, 9) << " s -> " << r.particle_count << " particles ("
       << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd << "), stress recovery "
       << (o.recovery == "spr" ? "SPR (Zienkiewicz-Zhu)" : "inverse-distance weighting") << "\n";
@@ -91,6 +104,7 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
   out << "  grid: " << d.grid.nx << " x " << d.grid.ny << " " << (d.grid.gimp ? "ED2Q16G" : "ED2Q4") << " cells of "
       << fmt(d.grid.h) << " m from (" << fmt(d.grid.x0) << ", " << fmt(d.grid.y0) << "); dt " << fmt(d.dt)
       << " s, nsteps " << d.nsteps << ", output every " << d.output_steps << " steps\n";
+  for (const auto& b : boundaries) out << "  boundary: " << boundary_text(b, d) << "\n";
   out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, particles.txt, "
       << "report.json in " << outdir.string() << "\n";
   out << "  time: read " << fmt(t.read, 3) << " s, map " << fmt(t.map, 3) << " s, report + deck " << fmt(t.report_deck, 3)
@@ -118,6 +132,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   ro.material.cohesion = o.cohesion;
   ro.material.psi_deg = o.psi;
   ro.material.tension = o.tension;
+  for (const auto& text : o.material) parse_material_override(text, "--material", ro.per_material);
   ro.gravity = o.gravity;
   ro.plane_stress = o.plane_stress;
 
@@ -135,12 +150,9 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (o.cell_type == "ED2Q16G") deck.gimp = true;
   else if (o.cell_type == "ED2Q4") deck.gimp = false;
   else throw common::InputError("--cell-type", "expected ED2Q16G or ED2Q4, got '" + o.cell_type + "'");
-  deck.left = parse_wall(o.left_wall, "--left-wall");
-  deck.right = parse_wall(o.right_wall, "--right-wall");
-  if (o.base == "friction") deck.base = Base::Friction;
-  else if (o.base == "roller") deck.base = Base::Roller;
-  else if (o.base == "fixed") deck.base = Base::Fixed;
-  else throw common::InputError("--base", "expected friction, roller or fixed, got '" + o.base + "'");
+  if (o.left_wall) deck.left = parse_wall(*o.left_wall, "--left-wall");
+  if (o.right_wall) deck.right = parse_wall(*o.right_wall, "--right-wall");
+  if (o.base) deck.base = parse_base(*o.base);
   if (!o.extent.empty()) deck.extent = std::array<double, 4>{o.extent[0], o.extent[1], o.extent[2], o.extent[3]};
   if (deck.uuid.empty() || deck.uuid.find('/') != std::string::npos)
     throw common::InputError("--uuid", "expected a plain name (no '/'), got '" + deck.uuid + "'");
@@ -156,6 +168,10 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   // 1. Read and check everything (no output yet).
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
+  const ExtractedBoundaries supports = o.ignore_supports ? ExtractedBoundaries{} : extract_boundaries(model);
+  const BoundaryOptionsGiven given{o.left_wall.has_value(), o.right_wall.has_value(), o.base.has_value(), !o.extent.empty(),
+                                   o.deck.base_y.has_value()};
+  const std::vector<BoundaryChoice> boundaries = apply_supports(supports, given, deck);
   const TransferState& state = assembled.state;
   if (const auto bad = inverted_elements(state); !bad.empty()) {
     std::string list;
@@ -172,7 +188,11 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   timing.map = lap();
   DeckText d = plan_deck(state, particles, deck);  // the last check that can fail on user input
   // Warnings only now: a failed run prints its one error line and nothing else.
-  for (const auto& w : assembled.warnings) err << "fem2mpm: warning: " << w << "\n";
+  std::vector<std::string> warnings = assembled.warnings;
+  warnings.insert(warnings.end(), supports.warnings.begin(), supports.warnings.end());
+  warnings.insert(warnings.end(), d.warnings.begin(), d.warnings.end());
+  for (const auto& w : warnings) err << "fem2mpm: warning: " << w << "\n";
+  assembled.notes.insert(assembled.notes.end(), supports.notes.begin(), supports.notes.end());
 
   // 3. Write. The HDF5 file is written (to a temporary name, then renamed) on a second thread while the
   // report and the text files are prepared; the text files are renamed only when both succeeded, and the
@@ -216,7 +236,8 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     rj["min_jacobian"] = {{"value", report.min_jacobian}, {"element", report.min_jacobian_element}};
     rj["particle_file"] = d.particle_file;
     rj["notes"] = assembled.notes;
-    rj["warnings"] = assembled.warnings;
+    rj["warnings"] = warnings;
+    rj["boundaries"] = boundaries_json(boundaries, d);
     auto text = [&](const char* name, const std::string& body) {
       files.push_back(std::make_unique<common::AtomicTextFile>(outdir / name));
       files.back()->stream() << body;
@@ -244,7 +265,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     std::filesystem::remove(h5_path, ec);
     throw;
   }
-  if (!o.quiet) print_report(out, assembled, report, d, o, outdir, timing);
+  if (!o.quiet) print_report(out, assembled, report, d, o, boundaries, outdir, timing);
   return 0;
 }
 
@@ -284,6 +305,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--cohesion", o.cohesion, "cohesion")->group("Material (FEM units; override the model file)");
   app.add_option("--psi", o.psi, "dilation angle, degrees (default 0)")->group("Material (FEM units; override the model file)");
   app.add_option("--tension", o.tension, "tension cutoff (default: the Mohr-Coulomb apex, c cot(phi))")->group("Material (FEM units; override the model file)");
+  app.add_option("--material", o.material, "per FEM material (its tag in the model file), after the options above: NAME:key=value[,key=value...], keys type (elastic|mohr-coulomb), E, nu, density, phi, cohesion, psi, tension; repeatable, e.g. --material 2:phi=30,cohesion=5")->group("Material (FEM units; override the model file)");
   app.add_option("--gravity", o.gravity, "gravity, m/s2, acting in -y (default: from the elements' body forces / density, else 9.81)")->group("Material (FEM units; override the model file)");
   // Mapping.
   app.add_option("--ppd", o.ppd, "particles per direction per element, at the Gauss-Legendre points")->capture_default_str()->group("Mapping");
@@ -295,15 +317,16 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--out", o.out, "output folder (created); run the result with mpm -f <out>/ -i mpm.json")->required()->group("MPM deck");
   app.add_option("--uuid", o.deck.uuid, "run name: the particle file goes to results/<uuid>/")->capture_default_str()->group("MPM deck");
   app.add_option("--step", o.deck.step, "step number of the particle file (resume.step)")->capture_default_str()->group("MPM deck");
-  app.add_option("--cell-size", o.deck.cell_size, "background cell size, m (default: sqrt of the mean element area)")->group("MPM deck");
-  app.add_option("--extent", o.extent, "grid extent xmin xmax ymin ymax, m (default: the deformed model's bounding box, extended 3 widths to the right and 0.25 heights up)")
+  app.add_option("--cell-size", o.deck.cell_size, "background cell size, m (default: sqrt of the mean element area, adjusted to a whole number of cells between two FEM walls)")->group("MPM deck");
+  app.add_option("--extent", o.extent, "grid extent xmin xmax ymin ymax, m (default: the deformed model's bounding box with its FEM walls and base on grid lines, one cell row below the base, extended 3 widths beyond each free side and 0.25 heights up; without FEM supports: 3 widths to the right)")
       ->expected(4)->group("MPM deck");
   app.add_option("--cell-type", o.cell_type, "ED2Q16G (GIMP, with CB-Geo's halo node ring) or ED2Q4")->capture_default_str()->group("MPM deck");
-  app.add_option("--left-wall", o.left_wall, "grid's left boundary: roller (x-velocity 0), fixed or none")->capture_default_str()->group("MPM deck");
-  app.add_option("--right-wall", o.right_wall, "grid's right boundary (the far end of the runout area): roller, fixed or none")->capture_default_str()->group("MPM deck");
-  app.add_option("--base", o.base, "grid's base: friction (y-velocity 0 + Coulomb friction), roller or fixed")->capture_default_str()->group("MPM deck");
+  app.add_option("--left-wall", o.left_wall, "grid's left boundary: roller (x-velocity 0), fixed or none (default: from the FEM supports, else roller)")->group("MPM deck");
+  app.add_option("--right-wall", o.right_wall, "grid's right boundary: roller, fixed or none (default: from the FEM supports, else roller at the far end of the runout area)")->group("MPM deck");
+  app.add_option("--base", o.base, "grid's base: friction (y-velocity 0 + Coulomb friction), roller or fixed (default: from the FEM supports: a roller line -> roller, a fixed line -> friction; else friction)")->group("MPM deck");
+  app.add_flag("--ignore-supports", o.ignore_supports, "do not carry the FEM supports over: walls, base and grid from the options and the legacy defaults")->group("MPM deck");
   app.add_option("--base-friction", o.deck.base_friction, "base friction coefficient mu (CB-Geo friction_constraints)")->capture_default_str()->group("MPM deck");
-  app.add_option("--base-y", o.deck.base_y, "height of the base, m: the base constraint acts on every node at or below it (default: the grid's bottom edge; with GIMP give the FEM base and an --extent one cell lower)")->group("MPM deck");
+  app.add_option("--base-y", o.deck.base_y, "height of the base, m: the base constraint acts on every node at or below it (default: the FEM base support line, else the grid's bottom edge; with GIMP and --extent give the FEM base and an extent one cell lower)")->group("MPM deck");
   app.add_option("--dt", o.deck.dt, "MPM time step, s (default: --cfl x cell size / P-wave speed)")->group("MPM deck");
   app.add_option("--cfl", o.deck.cfl, "Courant number for the default time step")->capture_default_str()->group("MPM deck");
   app.add_option("--duration", o.deck.duration, "MPM time to run after the transfer, s (nsteps = duration / dt + 1)")->capture_default_str()->group("MPM deck");

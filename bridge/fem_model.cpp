@@ -1,5 +1,6 @@
 #include "bridge/fem_model.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -267,6 +268,19 @@ void add_material(FemModel& model, const json& j) {
     if (it != j.end() && it->is_number()) return it->get<double>();
     return std::nullopt;
   };
+  if (m.type == "DruckerPrager") {  // fem_tcl's entry (OpenSees 3.8 writes invalid JSON for it)
+    const auto K = opt("K"), G = opt("G");
+    if (K && G && 3 * *K + *G > 0) {
+      m.E = 9 * *K * *G / (3 * *K + *G);
+      m.nu = (3 * *K - 2 * *G) / (2 * (3 * *K + *G));
+    }
+    m.rho = opt("density");
+    m.dp_sigma_y = opt("sigma_y");
+    m.dp_rho = opt("rho");
+    m.dp_rho_bar = opt("rho_bar");
+    model.materials[m.name] = m;
+    return;
+  }
   m.E = opt("E");
   m.nu = opt("nu");
   m.rho = opt("rho");
@@ -275,6 +289,30 @@ void add_material(FemModel& model, const json& j) {
   m.psi_deg = opt("psi");
   m.tension = opt("tension");
   model.materials[m.name] = m;
+}
+
+/// One "constraints.fix" entry: {"node": tag, "fix": [0|1, 0|1]}.
+void add_fix(FemModel& model, const json& j, const std::string& where_text) {
+  const auto node = j.find("node");
+  const auto fix = j.find("fix");
+  const bool flags_ok = fix != j.end() && fix->is_array() && fix->size() == 2 &&
+                        std::all_of(fix->begin(), fix->end(), [](const json& v) { return v.is_number_integer() && (v == 0 || v == 1); });
+  if (!j.is_object() || node == j.end() || !node->is_number_integer() || !flags_ok)
+    throw common::InputError(where_text, "expected {\"node\": tag, \"fix\": [0 or 1, 0 or 1]}, got " + j.dump());
+  model.fixes.push_back({node->get<long>(), (*fix)[0] == 1, (*fix)[1] == 1});
+}
+
+/// One "constraints.equalDOF" entry: {"retained": tag, "constrained": tag, "dofs": [1 and/or 2]}.
+void add_tie(FemModel& model, const json& j, const std::string& where_text) {
+  const auto retained = j.find("retained"), constrained = j.find("constrained"), dofs = j.find("dofs");
+  const bool dofs_ok = dofs != j.end() && dofs->is_array() && !dofs->empty() &&
+                       std::all_of(dofs->begin(), dofs->end(), [](const json& v) { return v.is_number_integer() && (v == 1 || v == 2); });
+  if (!j.is_object() || retained == j.end() || !retained->is_number_integer() || constrained == j.end() ||
+      !constrained->is_number_integer() || !dofs_ok)
+    throw common::InputError(where_text, "expected {\"retained\": tag, \"constrained\": tag, \"dofs\": [1 and/or 2]}, got " + j.dump());
+  FemTie t{retained->get<long>(), constrained->get<long>(), {}};
+  for (const auto& d : *dofs) t.dofs.push_back(d.get<int>());
+  model.ties.push_back(std::move(t));
 }
 
 /// Resolves element node tags to indices and checks the model is not empty.
@@ -291,6 +329,15 @@ void finish(FemModel& model, const std::filesystem::path& file) {
       e.nodes[a] = it->second;
     }
   }
+  auto known = [&](long tag, const std::string& key) {
+    if (!model.node_by_tag.count(tag))
+      throw common::InputError(where(file, key), "node " + std::to_string(tag) + " is not in geometry.nodes");
+  };
+  for (const auto& f : model.fixes) known(f.node, "constraints.fix");
+  for (const auto& t : model.ties) {
+    known(t.retained, "constraints.equalDOF");
+    known(t.constrained, "constraints.equalDOF");
+  }
 }
 
 /// OpenSees 3.8 and fem_tcl write one node, element or material per line: read the entries line by
@@ -302,7 +349,7 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
   model.source = file;
   std::istringstream in(text);
   std::string line;
-  enum class Section { None, Nodes, Elements, Materials } section = Section::None;
+  enum class Section { None, Nodes, Elements, Materials, Fixes, Ties } section = Section::None;
   FlatEntry flat;
   int line_no = 0;
   while (std::getline(in, line)) {
@@ -310,6 +357,9 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
     if (line.find("\"nodes\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Nodes; continue; }
     if (line.find("\"elements\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Elements; continue; }
     if (line.find("\"ndMaterials\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Materials; continue; }
+    if (line.find("\"constraints\":") != std::string::npos) model.has_constraints = true;
+    if (line.find("\"fix\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Fixes; continue; }
+    if (line.find("\"equalDOF\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Ties; continue; }
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
     if (line[first] == ']') { section = Section::None; continue; }
@@ -321,6 +371,13 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
         (section == Section::Nodes ? add_node_fast(model, flat, at) : add_element_fast(model, flat, at)))
       continue;
     const json j = json::parse(entry, nullptr, false);
+    if (section == Section::Fixes || section == Section::Ties) {
+      const std::string key = section == Section::Fixes ? "constraints.fix" : "constraints.equalDOF";
+      if (j.is_discarded()) throw common::InputError(at + ": " + key, "cannot parse this entry as JSON");
+      if (section == Section::Fixes) add_fix(model, j, at + ": " + key);
+      else add_tie(model, j, at + ": " + key);
+      continue;
+    }
     if (j.is_discarded()) {
       if (section == Section::Materials) {  // the invalid entry OpenSees writes; materials come from options
         model.materials_readable = false;
@@ -377,6 +434,20 @@ FemModel parse_fem_model(const std::string& text, const std::filesystem::path& f
     if (const auto mats = props->find("ndMaterials"); mats != props->end() && mats->is_array())
       for (const auto& m : *mats)
         if (m.is_object()) add_material(model, m);
+  if (const auto cons = sam->find("constraints"); cons != sam->end()) {
+    if (!cons->is_object())
+      throw common::InputError(where(file, "StructuralAnalysisModel.constraints"), "expected an object with \"fix\" and \"equalDOF\" lists");
+    model.has_constraints = true;
+    auto list = [&](const char* key, auto add) {
+      const auto it = cons->find(key);
+      if (it == cons->end()) return;
+      const std::string k = std::string("constraints.") + key;
+      if (!it->is_array()) throw common::InputError(where(file, k), "expected a list");
+      for (std::size_t i = 0; i < it->size(); ++i) add(model, (*it)[i], where(file, k + "[" + std::to_string(i) + "]"));
+    };
+    list("fix", add_fix);
+    list("equalDOF", add_tie);
+  }
   finish(model, file);
   return model;
 }

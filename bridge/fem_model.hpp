@@ -40,6 +40,21 @@ struct FemMaterial {
   std::string type;                  ///< OpenSees type word ("ElasticIsotropicMaterial", "MohrCoulomb", ...)
   std::optional<double> E, nu, rho;  ///< elastic constants and density when the JSON gives them
   std::optional<double> phi_deg, cohesion, psi_deg, tension;  ///< MohrCoulomb only
+  /// DruckerPrager only, OpenSees' parameters: cone f = ||s|| + rho I1 - sqrt(2/3) sigma_y, plastic potential
+  /// with rho_bar (E and nu are derived from its K and G, the density from "density").
+  std::optional<double> dp_sigma_y, dp_rho, dp_rho_bar;
+};
+
+/// A homogeneous single-point constraint (`fix node fx fy`), from fem_tcl's "constraints.fix" list.
+struct FemFix {
+  long node = 0;
+  bool x = false, y = false;
+};
+
+/// An `equalDOF retained constrained dofs...` tie (dofs 1-based), from "constraints.equalDOF".
+struct FemTie {
+  long retained = 0, constrained = 0;
+  std::vector<int> dofs;
 };
 
 struct FemModel {
@@ -48,6 +63,10 @@ struct FemModel {
   std::vector<FemElement> elements;  ///< in file order
   std::map<std::string, FemMaterial> materials;
   bool materials_readable = true;    ///< false when the JSON was invalid and only geometry was read
+  /// The supports: true when the file has fem_tcl's "constraints" block (OpenSees 3.8 writes none).
+  bool has_constraints = false;
+  std::vector<FemFix> fixes;
+  std::vector<FemTie> ties;
 
   /// Index of the node with `tag`, or -1.
   int node_index(long tag) const;
@@ -59,7 +78,8 @@ struct FemModel {
 };
 
 /// Reads `print -JSON` output. Throws common::InputError "<file>:<line>: <what>" for a missing
-/// file, an element type other than SSPquad/quad, an unknown node tag, or no nodes/elements.
+/// file, an element type other than SSPquad/quad, an unknown node tag, no nodes/elements, or a
+/// malformed "constraints" entry (naming the key).
 FemModel read_fem_model(const std::filesystem::path& file);
 
 /// Parses the JSON text (exposed for tests); `file` names it in errors.

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "bridge/drucker_prager_match.hpp"
 #include "bridge/recorder_file.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
@@ -47,31 +48,58 @@ std::size_t pick_row(const RecorderFile& file, std::optional<double> time, std::
   return file.rows().size() - 1;
 }
 
-MpmMaterial resolve_material(const FemModel& model, const std::string& name, const MaterialOverrides& o,
-                             double density_factor, double stress_factor) {
+/// Copies every value `o` sets into the working values (later overrides win).
+struct MaterialValues {
+  std::optional<double> E, nu, rho, phi, c, psi, tension;
+  std::string type;
+  void apply(const MaterialOverrides& o) {
+    if (o.type) type = *o.type;
+    if (o.E) E = o.E;
+    if (o.nu) nu = o.nu;
+    if (o.density) rho = o.density;
+    if (o.phi_deg) phi = o.phi_deg;
+    if (o.cohesion) c = o.cohesion;
+    if (o.psi_deg) psi = o.psi_deg;
+    if (o.tension) tension = o.tension;
+  }
+};
+
+MpmMaterial resolve_material(const FemModel& model, const std::string& name, const ReadOptions& options,
+                             double density_factor, double stress_factor, std::vector<std::string>& notes) {
   MpmMaterial m;
   m.fem_name = name;
   const auto it = model.materials.find(name);
   const FemMaterial* fem = it == model.materials.end() ? nullptr : &it->second;
-  std::optional<double> E, nu, rho, phi, c, psi, tension;
-  std::string type;
+  MaterialValues v;
+  std::string dp_failure;
   if (fem) {
-    E = fem->E; nu = fem->nu; rho = fem->rho; phi = fem->phi_deg; c = fem->cohesion; psi = fem->psi_deg; tension = fem->tension;
-    if (fem->type == "ElasticIsotropicMaterial" || fem->type == "ElasticIsotropic") type = "elastic";
-    else if (fem->type == "MohrCoulomb") type = "mohr-coulomb";
+    v.E = fem->E; v.nu = fem->nu; v.rho = fem->rho; v.phi = fem->phi_deg; v.c = fem->cohesion; v.psi = fem->psi_deg; v.tension = fem->tension;
+    if (fem->type == "ElasticIsotropicMaterial" || fem->type == "ElasticIsotropic") v.type = "elastic";
+    else if (fem->type == "MohrCoulomb") v.type = "mohr-coulomb";
+    else if (fem->type == "DruckerPrager" && fem->dp_sigma_y && fem->dp_rho && fem->dp_rho_bar) {
+      if (const auto mc = plane_strain_mohr_coulomb(*fem->dp_sigma_y, *fem->dp_rho, *fem->dp_rho_bar)) {
+        v.type = "mohr-coulomb";
+        v.phi = mc->phi_deg;
+        v.c = mc->cohesion;
+        v.psi = mc->psi_deg;
+        notes.push_back("material '" + name + "': DruckerPrager (sigma_y " + fmt(*fem->dp_sigma_y) + ", rho " + fmt(*fem->dp_rho) +
+                        ", rho_bar " + fmt(*fem->dp_rho_bar) + ") -> MohrCoulomb2D by the plane-strain match: phi " +
+                        fmt(mc->phi_deg) + " deg, c " + fmt(mc->cohesion) + ", psi " + fmt(mc->psi_deg) +
+                        " deg (same apex; hardening not carried over)");
+      } else {
+        dp_failure = " (DruckerPrager rho " + fmt(*fem->dp_rho) + " / rho_bar " + fmt(*fem->dp_rho_bar) +
+                     " >= 1/sqrt(6) has no plane-strain Mohr-Coulomb match: give --material " + name + ":type=mohr-coulomb,phi=...,cohesion=...)";
+      }
+    }
   }
-  if (o.type) type = *o.type;
-  if (o.E) E = o.E;
-  if (o.nu) nu = o.nu;
-  if (o.density) rho = o.density;
-  if (o.phi_deg) phi = o.phi_deg;
-  if (o.cohesion) c = o.cohesion;
-  if (o.psi_deg) psi = o.psi_deg;
-  if (o.tension) tension = o.tension;
+  v.apply(options.material);
+  if (const auto own = options.per_material.find(name); own != options.per_material.end()) v.apply(own->second);
+  auto& [E, nu, rho, phi, c, psi, tension, type] = v;
   const std::string src = model.source.string() + ": material '" + name + "'";
   const std::string why = !model.materials_readable
                               ? " (the file is not valid JSON, as OpenSees 3.8 writes it for DruckerPrager and multi-yield "
                                 "materials: give the material with --material-type, --E, --nu, --density, --phi, --cohesion)"
+                              : !dp_failure.empty() ? dp_failure
                               : (fem ? " (type '" + fem->type + "' has no MPM counterpart: give --material-type and its parameters)"
                                      : " (not in properties.ndMaterials: give --material-type and its parameters)");
   if (type.empty()) throw common::InputError(src, "unknown material" + why);
@@ -104,6 +132,44 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
 }
 
 }  // namespace
+
+void parse_material_override(const std::string& text, const std::string& option,
+                             std::map<std::string, MaterialOverrides>& into) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 == text.size())
+    throw common::InputError(option, "expected NAME:key=value[,key=value...] (e.g. 2:phi=30,cohesion=5), got '" + text + "'");
+  const std::string name = text.substr(0, colon);
+  MaterialOverrides& o = into[name];
+  std::istringstream items(text.substr(colon + 1));
+  for (std::string item; std::getline(items, item, ',');) {
+    const auto eq = item.find('=');
+    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    const std::string where = option + " " + text;
+    if (eq == std::string::npos || value.empty()) throw common::InputError(where, "expected key=value, got '" + item + "'");
+    if (key == "type") {
+      if (value != "elastic" && value != "mohr-coulomb")
+        throw common::InputError(where, "type: expected elastic or mohr-coulomb, got '" + value + "'");
+      o.type = value;
+      continue;
+    }
+    double number = 0;
+    try {
+      std::size_t used = 0;
+      number = std::stod(value, &used);
+      if (used != value.size() || !std::isfinite(number)) throw std::invalid_argument(value);
+    } catch (const std::exception&) {
+      throw common::InputError(where, key + ": expected a number, got '" + value + "'");
+    }
+    if (key == "E") o.E = number;
+    else if (key == "nu") o.nu = number;
+    else if (key == "density") o.density = number;
+    else if (key == "phi") o.phi_deg = number;
+    else if (key == "cohesion" || key == "c") o.cohesion = number;
+    else if (key == "psi") o.psi_deg = number;
+    else if (key == "tension") o.tension = number;
+    else throw common::InputError(where, "unknown key '" + key + "' (expected type, E, nu, density, phi, cohesion, psi, tension)");
+  }
+}
 
 std::vector<long> parse_tag_list(const std::string& text, const std::string& option) {
   std::vector<long> out;
@@ -197,10 +263,16 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   // --- materials (ids in name order) and elements
   std::map<std::string, unsigned> material_ids;
   for (const auto& e : model.elements) material_ids.emplace(e.material, 0u);
+  for (const auto& [name, values] : options.per_material)
+    if (!material_ids.count(name)) {
+      std::string known;
+      for (const auto& [n, id] : material_ids) known += (known.empty() ? "" : ", ") + (n.empty() ? std::string("(none)") : n);
+      throw common::InputError("--material " + name, "the model's elements use no material '" + name + "' (they use: " + known + ")");
+    }
   unsigned next_id = 0;
   for (auto& [name, id] : material_ids) {
     id = next_id++;
-    MpmMaterial m = resolve_material(model, name, options.material, factor, factor);
+    MpmMaterial m = resolve_material(model, name, options, factor, factor, out.notes);
     m.id = id;
     st.materials.push_back(m);
   }

@@ -5,6 +5,7 @@
 // any output is written.
 #include <array>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,8 @@ struct ReadOptions {
   std::optional<std::vector<long>> elements;///< the Element recorder's element order (default: all, tag order)
   Units units = Units::SI;
   MaterialOverrides material;
+  /// Per FEM material (by its name/tag in the model file; `--material 2:phi=30`): applied after `material`.
+  std::map<std::string, MaterialOverrides> per_material;
   std::optional<double> gravity;            ///< m/s2; default from the body forces, else 9.81
   /// With 3 stress components per Gauss point: szz = nu (sxx + syy) (plane strain, default) or 0
   /// (plane-stress FEM models).
@@ -49,6 +52,11 @@ struct AssembledState {
 
 /// Throws common::InputError naming the file and line (or option) on any inconsistency.
 AssembledState read_fem_state(const FemModel& model, const ReadOptions& options);
+
+/// Parses one `--material NAME:key=value[,key=value...]` (keys type, E, nu, density, phi, cohesion or c, psi,
+/// tension; values in the FEM units, angles in degrees) into `into[NAME]`. Throws InputError naming `option`.
+void parse_material_override(const std::string& text, const std::string& option,
+                             std::map<std::string, MaterialOverrides>& into);
 
 /// Parses a tag list "1-35,40 42" (commas or spaces, a-b ranges). Throws InputError naming `option`.
 std::vector<long> parse_tag_list(const std::string& text, const std::string& option);

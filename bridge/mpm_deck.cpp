@@ -68,7 +68,7 @@ ordered_json material_json(const MpmMaterial& m) {
 }  // namespace
 
 GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
-                     const DeckOptions& options) {
+                     const DeckOptions& options, std::vector<std::string>* warnings) {
   GridSpec g;
   g.gimp = options.gimp;
   double area = 0;
@@ -83,13 +83,34 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
       xmin = std::min(xmin, p.x()); xmax = std::max(xmax, p.x());
       ymin = std::min(ymin, p.y()); ymax = std::max(ymax, p.y());
     }
-  std::array<double, 4> ext{xmin, xmax + 3 * (xmax - xmin), ymin, ymax + 0.25 * (ymax - ymin)};
-  if (options.extent) ext = *options.extent;
-  if (!(ext[1] > ext[0] && ext[3] > ext[2])) throw common::InputError("--extent", "expected xmin < xmax and ymin < ymax");
-  g.x0 = ext[0];
-  g.y0 = ext[2];
-  g.nx = static_cast<int>(std::ceil((ext[1] - ext[0]) / g.h - 1e-9));
-  g.ny = static_cast<int>(std::ceil((ext[3] - ext[2]) / g.h - 1e-9));
+  if (options.extent) {
+    const auto& ext = *options.extent;
+    if (!(ext[1] > ext[0] && ext[3] > ext[2])) throw common::InputError("--extent", "expected xmin < xmax and ymin < ymax");
+    g.x0 = ext[0];
+    g.y0 = ext[2];
+    g.nx = static_cast<int>(std::ceil((ext[1] - ext[0]) / g.h - 1e-9));
+    g.ny = static_cast<int>(std::ceil((ext[3] - ext[2]) / g.h - 1e-9));
+  } else {
+    // Walls and base on grid lines; the runout area (3 model widths) only beyond a free side, 0.25 heights
+    // above the top. Without FEM supports: the legacy layout, a wall at the model's left side.
+    const GridAnchors anchors = options.anchors ? *options.anchors : GridAnchors{xmin, std::nullopt, std::nullopt};
+    const double width = xmax - xmin, height = ymax - ymin;
+    const double left = anchors.left ? *anchors.left : xmin - 3 * width;
+    const double right = anchors.right ? *anchors.right : xmax + 3 * width;
+    if (anchors.left && anchors.right && !options.cell_size)  // a whole number of cells between the walls
+      g.h = (right - left) / std::max(1.0, std::round((right - left) / g.h));
+    const double bottom = anchors.base ? *anchors.base - g.h : ymin;  // one row below the base (GIMP support)
+    const double top = ymax + 0.25 * height;
+    g.nx = static_cast<int>(std::ceil((right - left) / g.h - 1e-9));
+    g.ny = static_cast<int>(std::ceil((top - bottom) / g.h - 1e-9));
+    g.x0 = anchors.left || !anchors.right ? left : right - g.nx * g.h;
+    g.y0 = bottom;
+    const double grid_right = g.x0 + g.nx * g.h;
+    if (anchors.left && anchors.right && std::abs(grid_right - right) > 1e-9 * g.h && warnings)
+      warnings->push_back("--cell-size " + num(g.h) + ": the right wall lies on the grid's edge at x = " + num(grid_right) +
+                          ", " + num(grid_right - right) + " m beyond the FEM support line at x = " + num(right) +
+                          "; a cell size that divides the wall distance " + num(right - left) + " m keeps it on the line");
+  }
   const double x1 = g.x0 + g.nx * g.h, y1 = g.y0 + g.ny * g.h;
   for (const auto& p : particles)
     if (p.coord_x < g.x0 || p.coord_x > x1 || p.coord_y < g.y0 || p.coord_y > y1)
@@ -102,7 +123,7 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
 DeckText plan_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                    const DeckOptions& options) {
   DeckText d;
-  const GridSpec g = choose_grid(state, particles, options);
+  const GridSpec g = choose_grid(state, particles, options, &d.warnings);
   d.grid = g;
   if (options.dt) {
     if (!(*options.dt > 0)) throw common::InputError("--dt", "expected a time step > 0");
@@ -127,9 +148,14 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
   if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
     throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
-  if (options.base_y && !(*options.base_y >= g.y0 && *options.base_y < g.y0 + g.ny * g.h))
+  const double grid_top = g.y0 + g.ny * g.h;
+  if (options.base_y && !(*options.base_y >= g.y0 && *options.base_y < grid_top))
     throw common::InputError("--base-y", "expected a height inside the grid [" + num(g.y0) + ", " +
-                                             num(g.y0 + g.ny * g.h) + "), got " + num(*options.base_y));
+                                             num(grid_top) + "), got " + num(*options.base_y));
+  const std::optional<double> support_base = options.anchors ? options.anchors->base : std::nullopt;
+  if (options.base_y) d.base_y = *options.base_y;
+  else if (support_base && *support_base >= g.y0 && *support_base < grid_top) d.base_y = *support_base;
+  else d.base_y = g.y0;
   if (options.base == Base::Friction && !(options.base_friction >= 0))
     throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
@@ -173,7 +199,7 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   // entity_sets.json: 0 left wall (x <= x0), 1 base (y <= base_y, default y0), 2 right wall (x >= x0 + nx h),
   // halo included.
   ordered_json left = ordered_json::array(), base = ordered_json::array(), right = ordered_json::array();
-  const double base_y = options.base_y ? *options.base_y : g.y0;
+  const double base_y = d.base_y;
   for (int j = -hal; j <= g.ny + hal; ++j)
     for (int i = -hal; i <= g.nx + hal; ++i) {
       if (i <= 0) left.push_back(g.node_id(i, j));

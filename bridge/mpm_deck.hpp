@@ -18,6 +18,13 @@ namespace bridge {
 enum class Wall { None, Roller, Fixed };
 enum class Base { Friction, Roller, Fixed };
 
+/// Where the FEM supports put the grid's edges (boundary_extraction): the default grid is aligned so that
+/// each is a grid line and is extended only beyond the free sides. Unset members are free sides.
+struct GridAnchors {
+  std::optional<double> left, right;  ///< x of the left / right wall, m
+  std::optional<double> base;         ///< y of the base, m (the grid starts one cell row lower)
+};
+
 struct DeckOptions {
   std::string uuid = "column";
   long long step = 0;                         ///< step number of the particle file (resume.step)
@@ -31,6 +38,9 @@ struct DeckOptions {
   /// bottom edge. Give the FEM base (e.g. 0) with an extent one cell row lower, so that a GIMP particle
   /// that dips a hair below the base still lies inside the grid.
   std::optional<double> base_y;
+  /// The FEM supports' lines (default grid and base height); unset: the legacy default (left edge at the
+  /// model, runout area 3 widths to the right, base at the grid's bottom edge).
+  std::optional<GridAnchors> anchors;
   std::optional<double> dt;                   ///< s; default cfl * h / c_p
   double cfl = 0.1;
   double duration = 10;                       ///< s of MPM time after the transfer
@@ -55,6 +65,8 @@ struct GridSpec {
 
 struct DeckText {
   GridSpec grid;
+  double base_y = 0;                          ///< m: the base node set is every node at or below it
+  std::vector<std::string> warnings;          ///< grid choices the user should know (a wall off its FEM line)
   double dt = 0;
   long long nsteps = 0, output_steps = 0;
   std::string particle_file;                  ///< results/<uuid>/particles<step>.h5, relative to the deck
@@ -64,7 +76,7 @@ struct DeckText {
 /// Chooses the grid (throws common::InputError naming the option when a particle lies outside the
 /// requested extent or the sizes are not positive).
 GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
-                     const DeckOptions& options);
+                     const DeckOptions& options, std::vector<std::string>* warnings = nullptr);
 
 /// Checks the options and chooses the grid, dt, nsteps, output interval and particle file name
 /// (everything but the text bodies). Throws common::InputError naming the option.

@@ -181,6 +181,24 @@ void write_model_json(Context& ctx, std::ostream& os) {
     nodes.push_back(j.dump());
   }
   for (const auto& [tag, e] : ctx.domain.elements()) elements.push_back(e->to_json().dump());
+  // Supports (fem_tcl's addition: OpenSees 3.8's print -JSON writes no SP or MP constraints). One entry per
+  // line, dofs 1-based as in the Tcl commands: {"node": n, "fix": [fx, fy]}, {"retained": r, "constrained": c, "dofs": [..]}.
+  std::vector<std::string> fixes, ties;
+  for (const auto& [tag, n] : ctx.domain.nodes()) {
+    if (!n->fixed[0] && !n->fixed[1]) continue;
+    nlohmann::ordered_json j;
+    j["node"] = tag;
+    j["fix"] = {n->fixed[0] ? 1 : 0, n->fixed[1] ? 1 : 0};
+    fixes.push_back(j.dump());
+  }
+  for (const auto& c : ctx.domain.equal_dofs()) {
+    nlohmann::ordered_json j;
+    j["retained"] = c.retained;
+    j["constrained"] = c.constrained;
+    j["dofs"] = nlohmann::ordered_json::array();
+    for (int d : c.dofs) j["dofs"].push_back(d + 1);
+    ties.push_back(j.dump());
+  }
   os << "{\n\"StructuralAnalysisModel\": {\n";
   os << "\t\"BIM\": \"unknown\",\n\t\"description\": \"\",\n\t\"engineer\": \"\",\n";
   os << "\t\"units\": {\n\t\t\"force\": \"\",\n\t\t\"length\": \"\",\n\t\t\"time\": \"\",\n\t\t\"temperature\": \"\"\n\t},\n";
@@ -196,6 +214,10 @@ void write_model_json(Context& ctx, std::ostream& os) {
   write_json_list(os, "\t\t", nodes);
   os << ",\n\t\t\"elements\": ";
   write_json_list(os, "\t\t", elements);
+  os << "\n\t},\n\t\"constraints\": {\n\t\t\"fix\": ";
+  write_json_list(os, "\t\t", fixes);
+  os << ",\n\t\t\"equalDOF\": ";
+  write_json_list(os, "\t\t", ties);
   os << "\n\t}\n}\n}\n";
 }
 

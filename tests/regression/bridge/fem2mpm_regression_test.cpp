@@ -261,6 +261,40 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
   expect_clean_failure(model + disp + stress + " --recovery rbf", dir, {"--recovery", "rbf"});
 }
 
+// The OpenSees reference model with a constraints block added (fem_tcl's layout): a fixed base (nodes 1-7)
+// is carried over, an interior single point (node 17, x = 1.5 m, y = 1 m) cannot be and is a warning naming
+// it (the run goes on, exit 0); a malformed entry is a one-line error naming the file, line and key.
+TEST(Fem2mpmRegression, SupportsTheGridCannotCarryWarnAndMalformedOnesFail) {
+  const fs::path dir = scratch_dir("supports");
+  std::string text = slurp(kCase / "model.json");
+  const std::string tail = "\t}\n}\n}\n";
+  ASSERT_EQ(text.substr(text.size() - tail.size()), tail);
+  auto with_fixes = [&](const std::string& fixes) {
+    return text.substr(0, text.size() - tail.size()) + "\t},\n\t\"constraints\": {\n\t\t\"fix\": [\n" + fixes +
+           "\t\t],\n\t\t\"equalDOF\": [\n\t\t]\n\t}\n}\n}\n";
+  };
+  std::string fixes;
+  for (int n = 1; n <= 7; ++n) fixes += "\t\t\t{\"node\": " + std::to_string(n) + ", \"fix\": [1, 1]},\n";
+  std::ofstream(dir / "model.json") << with_fixes(fixes + "\t\t\t{\"node\": 17, \"fix\": [1, 0]}\n");
+  const std::string args = "--units kN --model " + (dir / "model.json").string() + " --disp " + (kCase / "disp.out").string() +
+                           " --stress " + (kCase / "stress.out").string();
+  const Result r = run(args + " --out " + (dir / "deck").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("fem2mpm: warning: FEM supports at nodes 17 cannot be represented on the MPM grid (a single point"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("base at y = 0: friction mu = 0.4 (y-velocity 0, Coulomb friction) [FEM support]"), std::string::npos) << r.out;
+  // Free sides: no wall, the runout area 3 model widths (13.5 m) beyond each.
+  EXPECT_NE(r.out.find("left wall at x = -13.5: none (free face) [FEM side without support]"), std::string::npos) << r.out;
+  const auto report = nlohmann::json::parse(slurp(dir / "deck/report.json"));
+  bool named = false;
+  for (const auto& w : report["warnings"]) named = named || w.get<std::string>().find("nodes 17 cannot") != std::string::npos;
+  EXPECT_TRUE(named) << report["warnings"].dump();
+
+  fs::remove_all(dir / "deck");
+  std::ofstream(dir / "model.json") << with_fixes(fixes + "\t\t\t{\"node\": 17, \"fix\": \"x\"}\n");
+  expect_clean_failure(args, dir, {"model.json:", ": constraints.fix: expected {\"node\": tag, \"fix\": [0 or 1, 0 or 1]}"});
+}
+
 // The whole chain on a small slumping column (small_column.tcl): fem_tcl -> fem2mpm -> mpm.
 // Golden numbers: the column's mass rho W H = 1925 kg/m3 x 8 m x 6 m = 92400 kg/m (analytical); FEM and
 // particle momentum agree to round-off (exact by construction); mpm conserves the particles' mass and
@@ -310,6 +344,83 @@ TEST(Fem2mpmRegression, WholeChainFemTclToFem2mpmToMpm) {
   EXPECT_GT(moved, 0.0);
   EXPECT_LT(moved, 0.05);
   EXPECT_TRUE(fs::exists(deck / "results/column/particles100.h5"));
+}
+
+// The whole chain with fem2mpm's defaults on a layered cut slope (layered_slope.tcl, issue 9): the FEM
+// supports become the MPM boundaries (left and right rollers, frictional base), the grid is aligned to
+// them (walls at x = 0 and 20 m on grid edges, the base a grid line), no runout area past the walls, and
+// each FEM material its own MPM material. Asserted after 0.5 s of MPM: no particle beyond a wall or below
+// the base, the far-field foundation (x > 18 m, y < 5 m) at rest, below 1 mm, while the slope slides (more
+// than 5 cm). Reference numbers (measured with this deck, 2026-12-01): far field 0.25 mm with the supports
+// carried over, 4.0 mm with --ignore-supports (the old default deck, free on the right, where the
+// foundation later flowed out by metres); slope 0.19 m in both.
+TEST(Fem2mpmRegression, LayeredSlopeKeepsItsSupportsThroughTheChain) {
+  const fs::path fem_tcl = fs::path(GEOFLOW_BIN_DIR) / "fem_tcl", mpm = fs::path(GEOFLOW_BIN_DIR) / "mpm";
+  if (!fs::exists(fem_tcl) || !fs::exists(mpm)) GTEST_SKIP() << "build fem_tcl and mpm first (targets fem_tcl, mpm)";
+  const fs::path dir = scratch_dir("layered_slope");
+  fs::copy_file(fs::path(GEOFLOW_SOURCE_DIR) / "tests/regression/bridge/layered_slope.tcl", dir / "layered_slope.tcl");
+  ASSERT_EQ(std::system(("cd " + dir.string() + " && " + fem_tcl.string() + " layered_slope.tcl > fem.txt 2>&1").c_str()), 0)
+      << slurp(dir / "fem.txt");
+  const std::string fem_out = slurp(dir / "fem.txt");
+  ASSERT_NE(fem_out.find("slide: 0"), std::string::npos) << fem_out;
+
+  const fs::path deck = dir / "deck";
+  const Result r = run("--model " + (dir / "model.json").string() + " --disp " + (dir / "disp.out").string() + " --vel " +
+                           (dir / "vel.out").string() + " --stress " + (dir / "stress.out").string() +
+                           " --units kN --ppd 2 --duration 0.5 --out " + deck.string(),
+                       dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("boundary: left wall at x = 0: roller (x-velocity 0) [FEM support]; FEM support line x = 0, roller, y 0 to 10"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("boundary: right wall at x = 20: roller (x-velocity 0) [FEM support]; FEM support line x = 20, roller, y 0 to 5"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("boundary: base at y = 0: friction mu = 0.4"), std::string::npos) << r.out;
+  const auto report = nlohmann::json::parse(slurp(deck / "report.json"));
+  ASSERT_EQ(report["boundaries"].size(), 3u);
+  EXPECT_EQ(report["boundaries"][1]["fem_line"]["nodes"].size(), 6u);  // x = 20, y = 0 .. 5
+  const auto mpm_deck = nlohmann::json::parse(slurp(deck / "mpm.json"));
+  ASSERT_EQ(mpm_deck["materials"].size(), 2u);
+  EXPECT_EQ(mpm_deck["materials"][0]["friction"].get<double>(), 35.0);
+  EXPECT_EQ(mpm_deck["materials"][1]["friction"].get<double>(), 20.0);
+  // The grid: x from the left wall to the right wall, one cell row below the base.
+  std::istringstream mesh(slurp(deck / "mesh.txt"));
+  long nnodes = 0, ncells = 0;
+  mesh >> nnodes >> ncells;
+  double xmin = 1e30, xmax = -1e30, ymin = 1e30;
+  for (long k = 0; k < nnodes; ++k) {
+    double x = 0, y = 0;
+    mesh >> x >> y;
+    xmin = std::min(xmin, x); xmax = std::max(xmax, x); ymin = std::min(ymin, y);
+  }
+  const double h = -xmin;  // GIMP: one halo node ring outside the cells
+  EXPECT_GT(h, 0.5);
+  EXPECT_CLOSE(xmax, 20 + h, 1e-9, 1e-12);
+  EXPECT_CLOSE(ymin, -2 * h, 1e-9, 1e-12);
+  const long long nsteps = mpm_deck["analysis"]["nsteps"].get<long long>();
+  const auto transferred = mpm::io::read_particle_table(deck / "results/column" / mpm::io::particle_file_name(0, nsteps));
+  ASSERT_EQ(transferred.size(), 600u);
+  for (const auto& p : transferred) EXPECT_EQ(p.material_id, p.coord_y < 5 ? 0u : 1u) << "particle " << p.id;
+
+  ASSERT_EQ(std::system((mpm.string() + " -f " + deck.string() + "/ -i mpm.json > " + (dir / "mpm.txt").string() + " 2>&1").c_str()), 0)
+      << slurp(dir / "mpm.txt");
+  const long long last = (nsteps - 1) / mpm_deck["post_processing"]["output_steps"].get<long long>() *
+                         mpm_deck["post_processing"]["output_steps"].get<long long>();
+  const std::string name = mpm::io::particle_file_name(last, nsteps);
+  const auto later = mpm::io::read_particle_table(deck / "results/column" / name);
+  ASSERT_EQ(later.size(), transferred.size());
+  double far_field = 0, slope = 0;
+  for (const auto& a : later) {
+    const auto& b = transferred[static_cast<std::size_t>(a.id)];
+    EXPECT_GE(a.coord_x, 0.0) << "particle " << a.id << " crossed the left wall";
+    EXPECT_LE(a.coord_x, 20.0) << "particle " << a.id << " crossed the right wall";
+    EXPECT_GE(a.coord_y, 0.0) << "particle " << a.id << " went below the base";
+    const double moved = std::hypot(a.coord_x - b.coord_x, a.coord_y - b.coord_y);
+    if (b.coord_x > 18 && b.coord_y < 5) far_field = std::max(far_field, moved);
+    if (b.coord_y > 5) slope = std::max(slope, moved);
+  }
+  EXPECT_LT(far_field, 1e-3);
+  EXPECT_GT(slope, 0.05);
 }
 
 }  // namespace
