@@ -144,9 +144,9 @@ inline Deck sliding_block(const SlidingBlockSpec& s) {
   return deck;
 }
 
-/// Mass-weighted mean displacement and velocity along x of a snapshot.
+/// Mass-weighted mean displacement and velocity of a snapshot (t: its time, set by the caller).
 struct MeanMotion {
-  double ux = 0, vx = 0, vy = 0;
+  double ux = 0, vx = 0, vy = 0, t = 0;
 };
 inline MeanMotion mean_motion(const std::vector<mpm::io::ParticleRecord>& ps) {
   MeanMotion r;
