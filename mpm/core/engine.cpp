@@ -11,6 +11,7 @@
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
 #include "mpm/core/boundary_rules.hpp"
+#include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/shape_functions.hpp"
 
 namespace mpm::core {
@@ -18,6 +19,8 @@ namespace mpm::core {
 namespace {
 /// Nodes with less mass take no part in the grid update (CB-Geo's tolerance, include/node.tcc).
 constexpr double kMassTolerance = 1.0e-15;
+/// The small-mass cutoff as a fraction of a full node's mass rho hx hy (see Engine::small_mass_).
+constexpr double kSmallMassFraction = 0.02;
 
 /// A number quoted in an input error (10 significant digits, as the deck reader's).
 std::string num(double v) { return common::number_text(v, 10); }
@@ -98,12 +101,20 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   }
   if (!(dt_ > 0) || !std::isfinite(dt_)) throw common::InputError("analysis.dt", "expected a time step > 0");
 
+  // Small-mass cutoff (USL only): a fraction of the mass of a full node of the lightest material.
+  double lightest = std::numeric_limits<double>::infinity();
+  for (const auto& spec : deck.materials) lightest = std::min(lightest, spec.density);
+  small_mass_ = scheme_ == io::Scheme::USL ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
+
   // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).
-  fixed_.assign(nodes_, 0);
-  fixed_velocity_.assign(2 * nodes_, 0.0);
-  friction_dir_.assign(nodes_, -1);
-  friction_sign_.assign(nodes_, -1);
-  friction_mu_.assign(nodes_, 0.0);
+  constraint_of_.assign(nodes_, -1);
+  const auto constraint_at = [&](int n) -> NodeConstraint& {
+    if (constraint_of_[n] < 0) {
+      constraint_of_[n] = static_cast<std::int32_t>(constraints_.size());
+      constraints_.emplace_back();
+    }
+    return constraints_[static_cast<std::size_t>(constraint_of_[n])];
+  };
   for (std::size_t i = 0; i < deck.velocity_constraints.size(); ++i) {
     const auto& c = deck.velocity_constraints[i];
     const std::string where = "velocity_constraints[" + std::to_string(i) + "]";
@@ -111,8 +122,9 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     for (int n : c.nodes) {
       if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
         throw common::InputError(where, "node " + std::to_string(n) + " is not in the mesh");
-      fixed_[n] |= static_cast<std::uint8_t>(1u << c.dir);
-      fixed_velocity_[2 * n + c.dir] = c.velocity;
+      NodeConstraint& nc = constraint_at(n);
+      nc.fixed |= static_cast<std::uint8_t>(1u << c.dir);
+      nc.fixed_velocity[c.dir] = c.velocity;
     }
   }
   for (std::size_t i = 0; i < deck.friction_constraints.size(); ++i) {
@@ -122,9 +134,10 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     for (int n : c.nodes) {
       if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
         throw common::InputError(where, "node " + std::to_string(n) + " is not in the mesh");
-      friction_dir_[n] = static_cast<std::int8_t>(c.dir);
-      friction_sign_[n] = static_cast<std::int8_t>(c.sign_n > 0 ? 1 : -1);
-      friction_mu_[n] = c.friction;
+      NodeConstraint& nc = constraint_at(n);
+      nc.friction_dir = c.dir;
+      nc.sign_n = c.sign_n > 0 ? 1.0 : -1.0;
+      nc.mu = c.friction;
     }
   }
 
@@ -514,16 +527,20 @@ void Engine::nodal_velocity_row(int j) {
       vx = momentum_[2 * n] / mass_[n];
       vy = momentum_[2 * n + 1] / mass_[n];
     }
-    if (fixed_[n] & 1u) vx = fixed_velocity_[2 * n];
-    if (fixed_[n] & 2u) vy = fixed_velocity_[2 * n + 1];
+    if (const std::int32_t c = constraint_of_[n]; c >= 0) {
+      const NodeConstraint& nc = constraints_[static_cast<std::size_t>(c)];
+      if (nc.fixed & 1u) vx = nc.fixed_velocity[0];
+      if (nc.fixed & 2u) vy = nc.fixed_velocity[1];
+    }
     velocity_[2 * n] = vx;
     velocity_[2 * n + 1] = vy;
   }
 }
 
 /// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m with Cundall's local damping
-/// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), friction, then
-/// v_new = v + a dt, and the velocity constraints (prescribed velocity, zero acceleration).
+/// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), v_new = v + a dt
+/// (a = g below the small-mass cutoff); at a constrained node the friction and velocity constraints in
+/// momentum form (nodal_constraints.hpp), and the rate (v_new - v_old) / dt handed to FLIP in place of a.
 void Engine::integrate_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
@@ -536,22 +553,22 @@ void Engine::integrate_row(int j) {
     const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
     double fx = force_[2 * n], fy = force_[2 * n + 1];
     if (damping_ > 0.0) apply_cundall_damping(damping_, fx, fy, vx, vy);
-    double ax = fx / m, ay = fy / m;
-    if (friction_dir_[n] >= 0)
-      apply_friction_rule(friction_dir_[n], friction_sign_[n], friction_mu_[n], dt_, ax, ay, vx, vy);
-    double wx = vx + ax * dt_, wy = vy + ay * dt_;
-    if (fixed_[n] & 1u) {
-      wx = fixed_velocity_[2 * n];
-      ax = 0.0;
+    // Below the small-mass cutoff only gravity accelerates the node (see small_mass_).
+    const bool small = m < small_mass_;
+    const double ax = small ? gx_ : fx / m, ay = small ? gy_ : fy / m;
+    if (const std::int32_t c = constraint_of_[n]; c >= 0) {
+      const Vec2 v_old(momentum_[2 * n] / m, momentum_[2 * n + 1] / m);
+      const ConstrainedVelocity r = constrained_velocity(v_old, Vec2(ax, ay), dt_, constraints_[static_cast<std::size_t>(c)]);
+      u[0] = r.velocity[0];
+      u[1] = r.velocity[1];
+      u[2] = r.rate[0];
+      u[3] = r.rate[1];
+    } else {
+      u[0] = vx + ax * dt_;
+      u[1] = vy + ay * dt_;
+      u[2] = ax;
+      u[3] = ay;
     }
-    if (fixed_[n] & 2u) {
-      wy = fixed_velocity_[2 * n + 1];
-      ay = 0.0;
-    }
-    u[0] = wx;
-    u[1] = wy;
-    u[2] = ax;
-    u[3] = ay;
   }
 }
 

@@ -110,6 +110,59 @@ inline Deck collapsing_column(const mpm::io::Grid& grid, const mpm::io::Material
   return deck;
 }
 
+/// An elastic block sliding down a Coulomb base: gravity rotated by `angle_deg` (g (sin a, -cos a)), the
+/// block [x0, x0 + width] x [0, height] (ppd x ppd particles per cell) on the base y = 0 of a grid of
+/// `cells_x` x ceil(height / h) + 1 cells, which is fixed in y and carries CB-Geo's friction constraint
+/// (dir 1, sign_n -1, coefficient mu). The block starts at rest in its K0 = nu / (1 - nu) state under
+/// the normal gravity component. Analytic motion (rigid block, Coulomb friction; e.g. Bardenhagen,
+/// Brackbill & Sulsky 2000, CMAME 187, section 5): for mu < tan a, x(t) = a_s t^2 / 2, v = a_s t with
+/// a_s = g (sin a - mu cos a); for mu >= tan a it stays at rest. The caller sets the scheme and dt.
+struct SlidingBlockSpec {
+  double angle_deg = 30.0, mu = 0.3;
+  double width = 2.0, height = 1.0, x0 = 0.5;
+  double h = 0.25;
+  int cells_x = 40, ppd = 2;
+  double rho = 1000, E = 1e6, nu = 0.3;
+  CellType type = CellType::Linear4;
+};
+inline Deck sliding_block(const SlidingBlockSpec& s) {
+  constexpr double g = 9.81;
+  const double a = s.angle_deg * std::acos(-1.0) / 180.0;
+  Deck deck;
+  deck.grid = make_grid(0, 0, s.h, s.cells_x, static_cast<int>(std::ceil(s.height / s.h - 1e-9)) + 1, s.type);
+  deck.materials.push_back(elastic(0, s.rho, s.E, s.nu));
+  fill_block(deck, s.x0, s.x0 + s.width, 0.0, s.height, s.ppd, 0);
+  const double k0 = s.nu / (1.0 - s.nu);
+  for (auto& p : deck.particles) {
+    p.stress_yy = -s.rho * g * std::cos(a) * (s.height - p.coord_y);
+    p.stress_xx = p.stress_zz = k0 * p.stress_yy;
+  }
+  const auto base = nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; });
+  deck.velocity_constraints.push_back({base, 1, 0.0});
+  deck.friction_constraints.push_back({base, 1, -1, s.mu});
+  deck.analysis.gravity = {g * std::sin(a), -g * std::cos(a)};
+  return deck;
+}
+
+/// Mass-weighted mean displacement and velocity of a snapshot (t: its time, set by the caller).
+struct MeanMotion {
+  double ux = 0, vx = 0, vy = 0, t = 0;
+};
+inline MeanMotion mean_motion(const std::vector<mpm::io::ParticleRecord>& ps) {
+  MeanMotion r;
+  double m = 0;
+  for (const auto& p : ps) {
+    m += p.mass;
+    r.ux += p.mass * p.displacement_x;
+    r.vx += p.mass * p.velocity_x;
+    r.vy += p.mass * p.velocity_y;
+  }
+  r.ux /= m;
+  r.vx /= m;
+  r.vy /= m;
+  return r;
+}
+
 /// Sums over a snapshot.
 struct Totals {
   double mass = 0, mx = 0, my = 0, px = 0, py = 0, kinetic = 0;

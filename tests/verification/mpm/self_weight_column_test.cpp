@@ -76,8 +76,11 @@ TEST(SelfWeightColumn, NodalStrainRemedyLowersTheStressError) {
     std::printf("cell type %d: none RMS %.4f max %.4f | nodal_strain RMS %.4f max %.4f\n", static_cast<int>(type),
                 none.rms_error, none.max_error, nodal.rms_error, nodal.max_error);
     EXPECT_CLOSE(none.rms_error, 0.5 / (4 * 10.0), 1e-3, 0);
-    EXPECT_LT(nodal.rms_error, 0.6 * none.rms_error);
-    EXPECT_LT(nodal.max_error, 0.8 * none.max_error);
+    // Bounds 0.7 / 0.9: with the wall-consistent FLIP increment at the fixed base (nodal_constraints.hpp)
+    // the linear-cell column ends at 0.63 / 0.85 of the unsmoothed error (0.54 / 0.74 before, when the
+    // base particles kept their normal velocity); uGIMP at 0.39 / 0.59.
+    EXPECT_LT(nodal.rms_error, 0.7 * none.rms_error);
+    EXPECT_LT(nodal.max_error, 0.9 * none.max_error);
     EXPECT_LT(nodal.kinetic, 0.1);
   }
 }

@@ -1,83 +1,195 @@
 // A block sliding on a frictional base under inclined gravity (Coulomb friction; the MPM check of
-// Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, and of CB-Geo's friction constraint): with
-// gravity g (sin a, -cos a) and friction coefficient mu < tan a the block accelerates uniformly,
-// x(t) = 1/2 g (sin a - mu cos a) t^2; with mu >= tan a it stays at rest. The base nodes carry CB-Geo's
-// friction constraint (dir 1, sign_n -1) and a zero normal velocity.
+// Bardenhagen, Brackbill & Sulsky 2000, CMAME 187, section 5, and of CB-Geo's friction constraint):
+// with gravity g (sin a, -cos a) and friction coefficient mu < tan a a rigid block accelerates
+// uniformly, d(t) = 1/2 g (sin a - mu cos a) t^2, v(t) = g (sin a - mu cos a) t; with mu >= tan a it
+// stays at rest. The base nodes carry CB-Geo's friction constraint (dir 1, sign_n -1) and a zero
+// normal velocity (tests/support/mpm_test_decks.hpp sliding_block). The block here is elastic
+// (E = 10 MPa, 2 m x 1 m, 0.25 m cells, 2 x 2 particles per cell): 3 % covers its stress waves and
+// the time discretisation.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <tuple>
 
-#include "support/tolerance.hpp"
 #include "support/mpm_test_decks.hpp"
+#include "support/tolerance.hpp"
 
 namespace {
 
 using namespace mpm_test;
+using mpm::io::Scheme;
 
 constexpr double kG = 9.81;
 
-/// Returns the mean x displacement of the block after `t_end` seconds.
-double slide(double angle_deg, double mu, CellType type, mpm::io::Scheme scheme, double t_end, double E = 1e6,
-             double pic_blend = 0.0) {
-  const double a = angle_deg * std::acos(-1.0) / 180.0;
-  Deck deck;
-  deck.grid = make_grid(0, 0, 0.25, 40, 8, type);
-  deck.materials.push_back(elastic(0, 1000, E, 0.3));
-  fill_block(deck, 0.5, 1.5, 0.0, 1.0, 2, 0);
-  for (auto& p : deck.particles) {  // at rest under the normal gravity component (K0 = nu / (1 - nu))
-    p.stress_yy = -1000 * kG * std::cos(a) * (1.0 - p.coord_y);
-    p.stress_xx = p.stress_zz = 0.3 / 0.7 * p.stress_yy;
-  }
-  const auto& g = deck.grid;
-  const auto base = nodes_where(g, [](double, double y) { return y <= 1e-9; });
-  deck.velocity_constraints.push_back({base, 1, 0.0});
-  deck.friction_constraints.push_back({base, 1, -1, mu});
+double deg(double a) { return a * std::acos(-1.0) / 180.0; }
+
+/// The velocity transfer: PIC, FLIP or a FLIP/PIC blend (analysis.pic_blend).
+struct Transfer {
+  const char* name;
+  bool pic;
+  double blend;
+};
+constexpr Transfer kPic{"PIC", true, 0.0};
+constexpr Transfer kFlip{"FLIP", false, 0.0};
+constexpr Transfer kBlend{"Blend20", false, 0.2};  // pic_blend 0.2
+
+/// Runs the block to t_end (the first step at or past it); the mass-weighted mean motion.
+MeanMotion slide(SlidingBlockSpec spec, Scheme scheme, Transfer transfer, double t_end) {
+  // Room for the frictionless travel g sin(a) t^2 / 2 ahead of the block.
+  const double travel = 0.5 * kG * std::sin(deg(spec.angle_deg)) * t_end * t_end;
+  spec.cells_x = static_cast<int>(std::ceil((spec.x0 + spec.width + travel + 1.0) / spec.h));
+  Deck deck = sliding_block(spec);
   deck.analysis.scheme = scheme;
-  deck.analysis.gravity = {kG * std::sin(a), -kG * std::cos(a)};
+  deck.analysis.velocity_update = transfer.pic;
+  deck.analysis.pic_blend = transfer.blend;
   deck.analysis.cfl = 0.4;
   deck.analysis.dt = 1.0;
-  deck.analysis.pic_blend = pic_blend;
   mpm::core::Simulation sim(deck, 1);
-  while (sim.time() < t_end - 1e-12) sim.step();
-  double ux = 0;
-  const auto ps = sim.snapshot();
-  for (const auto& p : ps) ux += p.displacement_x;
-  return ux / static_cast<double>(ps.size());
+  while (sim.time() < t_end - 1e-12) sim.step();  // throws on a runaway velocity
+  MeanMotion m = mean_motion(sim.snapshot());
+  m.t = sim.time();
+  return m;
 }
 
-TEST(SlidingBlock, DisplacementFollowsCoulombFriction) {
-  const double angle = 30.0, mu = 0.3, t = 1.0;
-  const double a = angle * std::acos(-1.0) / 180.0;
-  const double exact = 0.5 * kG * (std::sin(a) - mu * std::cos(a)) * t * t;  // 1.178 m
+double coulomb_acceleration(const SlidingBlockSpec& s) {
+  return kG * (std::sin(deg(s.angle_deg)) - s.mu * std::cos(deg(s.angle_deg)));
+}
+
+SlidingBlockSpec stiff_block(CellType type) {
+  SlidingBlockSpec s;
+  s.E = 1e7;
+  s.type = type;
+  return s;
+}
+
+std::string scheme_name(Scheme s) { return s == Scheme::USF ? "USF" : (s == Scheme::USL ? "USL" : "MUSL"); }
+
+// --- Every scheme, transfer and cell type: within 3 % of d(t) and v(t) ------------------------------
+
+class SlidingBlockCase : public testing::TestWithParam<std::tuple<CellType, Scheme, Transfer>> {};
+
+TEST_P(SlidingBlockCase, FollowsCoulombFriction) {
+  const auto [type, scheme, transfer] = GetParam();
+  const SlidingBlockSpec spec = stiff_block(type);
+  const MeanMotion m = slide(spec, scheme, transfer, 2.0);
+  const double a = coulomb_acceleration(spec);  // 2.357 m/s2: d(2 s) = 4.71 m, v(2 s) = 4.71 m/s
+  EXPECT_CLOSE(m.ux, 0.5 * a * m.t * m.t, 0.0, 0.03);
+  EXPECT_CLOSE(m.vx, a * m.t, 0.0, 0.03);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Schemes, SlidingBlockCase,
+    testing::Combine(testing::Values(CellType::Linear4, CellType::Gimp16),
+                     testing::Values(Scheme::USF, Scheme::USL, Scheme::MUSL), testing::Values(kPic, kBlend)),
+    [](const testing::TestParamInfo<SlidingBlockCase::ParamType>& info) {
+      return std::string(std::get<0>(info.param) == CellType::Linear4 ? "ED2Q4_" : "ED2Q16G_") +
+             scheme_name(std::get<1>(info.param)) + "_" + std::get<2>(info.param).name;
+    });
+
+// --- Pure FLIP --------------------------------------------------------------------------------------
+
+class SlidingBlockFlip : public testing::TestWithParam<std::tuple<CellType, Scheme>> {};
+
+TEST_P(SlidingBlockFlip, FollowsCoulombFrictionWithoutPoissonCoupling) {
+  // Pure FLIP on the nu = 0.3 block decelerates after ~0.3 s: a flutter mode of the elastic block on a
+  // bilateral Coulomb base grows (mpm/README.md "Friction under FLIP"). It needs the Poisson coupling
+  // of the tangential traction to the normal stress: with nu = 0 FLIP follows Coulomb.
+  const auto [type, scheme] = GetParam();
+  SlidingBlockSpec spec = stiff_block(type);
+  spec.nu = 0.0;
+  const MeanMotion m = slide(spec, scheme, kFlip, 0.8);
+  const double a = coulomb_acceleration(spec);
+  EXPECT_CLOSE(m.ux, 0.5 * a * m.t * m.t, 0.0, 0.03);
+  EXPECT_CLOSE(m.vx, a * m.t, 0.0, 0.03);
+}
+
+INSTANTIATE_TEST_SUITE_P(Schemes, SlidingBlockFlip,
+                         testing::Combine(testing::Values(CellType::Linear4, CellType::Gimp16),
+                                          testing::Values(Scheme::USF, Scheme::USL, Scheme::MUSL)),
+                         [](const testing::TestParamInfo<SlidingBlockFlip::ParamType>& info) {
+                           return std::string(std::get<0>(info.param) == CellType::Linear4 ? "ED2Q4_" : "ED2Q16G_") +
+                                  scheme_name(std::get<1>(info.param));
+                         });
+
+TEST(SlidingBlock, SoftBlockUnderFlip) {
+  // The soft 1 m block of the first version of this test (E = 1 MPa), pure FLIP, 1 s.
   for (auto type : {CellType::Linear4, CellType::Gimp16}) {
-    for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::MUSL}) {
-      SCOPED_TRACE(testing::Message() << "cell type " << static_cast<int>(type) << " scheme " << static_cast<int>(scheme));
-      // 3 %: the elastic block's stress waves and the time discretisation.
-      EXPECT_CLOSE(slide(angle, mu, type, scheme, t), exact, 0.0, 0.03);
+    for (auto scheme : {Scheme::USF, Scheme::MUSL}) {
+      SCOPED_TRACE(testing::Message() << "cell type " << static_cast<int>(type) << " " << scheme_name(scheme));
+      SlidingBlockSpec spec;
+      spec.width = 1.0;
+      spec.type = type;
+      const MeanMotion m = slide(spec, scheme, kFlip, 1.0);
+      EXPECT_CLOSE(m.ux, 0.5 * coulomb_acceleration(spec) * m.t * m.t, 0.0, 0.03);
     }
   }
 }
 
-TEST(SlidingBlock, StiffBlockNeedsALittlePic) {
-  // A stiff block (E = 50 MPa) rings as it crosses cells; pure FLIP keeps that noise, and friction,
-  // acting on |normal force|, turns it into extra drag (documented limitation). A 5 % PIC blend damps
-  // the noise and recovers the Coulomb solution.
-  const double a = 30.0 * std::acos(-1.0) / 180.0;
-  const double exact = 0.5 * kG * (std::sin(a) - 0.3 * std::cos(a));
-  for (auto type : {CellType::Linear4, CellType::Gimp16})
-    EXPECT_CLOSE(slide(30.0, 0.3, type, mpm::io::Scheme::MUSL, 1.0, 5e7, 0.05), exact, 0.0, 0.03);
+// --- Static friction and the friction limit ---------------------------------------------------------
+
+TEST(SlidingBlock, StaysAtRestOnASlopeFlatterThanTheFrictionAngle) {
+  // tan(20 deg) = 0.364 < mu = 0.5: static friction holds. Only elastic shear straining moves the
+  // particles: rho g sin(a) H / G ~ 1 mm at E = 10 MPa.
+  for (auto type : {CellType::Linear4, CellType::Gimp16}) {
+    for (auto scheme : {Scheme::USF, Scheme::USL, Scheme::MUSL}) {
+      for (const Transfer tr : {kFlip, kPic}) {
+        SCOPED_TRACE(testing::Message() << "cell type " << static_cast<int>(type) << " " << scheme_name(scheme) << " "
+                                        << tr.name);
+        SlidingBlockSpec spec = stiff_block(type);
+        spec.angle_deg = 20.0;
+        spec.mu = 0.5;
+        const MeanMotion m = slide(spec, scheme, tr, 1.0);
+        EXPECT_LT(std::abs(m.ux), 0.005);
+        EXPECT_LT(std::abs(m.vx), 0.01);
+      }
+    }
+  }
 }
 
-TEST(SlidingBlock, StaysAtRestWhenFrictionHolds) {
-  // tan(20 deg) = 0.364 < mu = 0.5: static friction holds (only elastic shear straining moves the
-  // particles: rho g sin(a) H / G ~ 1 cm at E = 1 MPa).
-  EXPECT_LT(std::abs(slide(20.0, 0.5, CellType::Gimp16, mpm::io::Scheme::MUSL, 0.5)), 0.02);
+TEST(SlidingBlock, ReleasedExactlyAtTheFrictionLimitStaysAtRest) {
+  // mu = tan(a): a = 0 (hard case of issue 10). The elastic block starts without the shear stress
+  // that carries the tangential load, so while the first waves cross it some base nodes slip a little;
+  // it must not accelerate: under 5 cm/s after 1 s (2.4 m/s on a slope 5 degrees steeper). PIC only:
+  // FLIP and the 20 % blend keep the block's elastic vibration, and at the limit every dip of a
+  // node's normal force lets it slip a little more (0.1-0.2 m after 1 s; mpm/README.md).
+  for (auto type : {CellType::Linear4, CellType::Gimp16}) {
+    SCOPED_TRACE(testing::Message() << "cell type " << static_cast<int>(type));
+    SlidingBlockSpec spec = stiff_block(type);
+    spec.angle_deg = 25.0;
+    spec.mu = std::tan(deg(25.0));
+    const MeanMotion m = slide(spec, Scheme::MUSL, kPic, 1.0);
+    EXPECT_LT(std::abs(m.ux), 0.05);
+    EXPECT_LT(std::abs(m.vx), 0.05);
+  }
 }
 
 TEST(SlidingBlock, FrictionlessBaseGivesFreeSliding) {
-  const double a = 30.0 * std::acos(-1.0) / 180.0;
+  SlidingBlockSpec spec;
+  spec.mu = 0.0;
+  const MeanMotion m = slide(spec, Scheme::MUSL, kFlip, 0.5);
   // 2 %: symplectic Euler adds (n + 1) / n, and the run ends at the first step past 0.5 s.
-  EXPECT_CLOSE(slide(30.0, 0.0, CellType::Linear4, mpm::io::Scheme::MUSL, 0.5), 0.5 * kG * std::sin(a) * 0.25, 0.0, 0.02);
+  EXPECT_CLOSE(m.ux, 0.5 * kG * std::sin(deg(30.0)) * 0.25, 0.0, 0.02);
+}
+
+// --- Particles entering empty cells at speed (USL small-mass cutoff) -------------------------------
+
+TEST(SlidingBlock, UslEntersEmptyCellsAtSpeedWithoutRunaway) {
+  // Frictionless, 2 s: the block's front enters empty cells at up to 9.8 m/s. USL with linear cells
+  // used to run away at step 80 (a node touched by the front particles' edge, a = f / m ~ 1 / m);
+  // the small-mass cutoff (mpm/core/engine.hpp small_mass_) keeps it on the free-sliding solution.
+  for (auto type : {CellType::Linear4, CellType::Gimp16}) {
+    for (const Transfer tr : {kFlip, kPic}) {
+      SCOPED_TRACE(testing::Message() << "cell type " << static_cast<int>(type) << " " << tr.name);
+      SlidingBlockSpec spec = stiff_block(type);
+      spec.mu = 0.0;
+      MeanMotion m;
+      ASSERT_NO_THROW(m = slide(spec, Scheme::USL, tr, 2.0));
+      const double a = kG * std::sin(deg(30.0));
+      EXPECT_CLOSE(m.ux, 0.5 * a * m.t * m.t, 0.0, 0.02);
+      EXPECT_CLOSE(m.vx, a * m.t, 0.0, 0.02);
+    }
+  }
 }
 
 }  // namespace

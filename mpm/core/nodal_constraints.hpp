@@ -1,0 +1,64 @@
+#pragma once
+// The velocity and friction constraints of one grid node in the explicit grid update, in momentum
+// form: the constraint changes the node's velocity by an impulse, and the same velocity change is
+// what FLIP hands to the particles, so PIC, FLIP and any blend see one constrained nodal field.
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+
+namespace mpm::core {
+
+using Vec2 = Eigen::Vector2d;
+
+/// What constrains one node (from the deck's velocity_constraints and friction_constraints).
+struct NodeConstraint {
+  std::uint8_t fixed = 0;  ///< bit d set: velocity component d is prescribed
+  Vec2 fixed_velocity = Vec2::Zero();
+  int friction_dir = -1;   ///< boundary normal axis (0 = x, 1 = y); -1: no friction
+  double sign_n = -1.0;    ///< outward normal sign along friction_dir (+1 / -1)
+  double mu = 0.0;         ///< Coulomb coefficient
+  bool constrained() const { return fixed != 0 || friction_dir >= 0; }
+};
+
+/// The constrained end-of-step nodal velocity and the velocity change it makes over the step.
+struct ConstrainedVelocity {
+  Vec2 velocity;  ///< v_new
+  Vec2 rate;      ///< (v_new - v_old) / dt: the FLIP increment rate handed to the particles
+};
+
+/// Grid update of a constrained node (Bardenhagen, Brackbill & Sulsky 2000, "The material-point method
+/// for granular materials", CMAME 187, 529-541, section 3, eqs. 19-25, the contact algorithm, with the
+/// wall as the rigid body). v_old = p / m is the node's velocity from the mapped momentum before any
+/// constraint, a = f / m its acceleration (after damping), v* = v_old + a dt the trial velocity.
+/// - Friction (friction_dir = d, outward sign s, coefficient mu): the wall pushes only when the node
+///   approaches it, w_n = s (v*_d - v_wall) > 0, with v_wall the prescribed normal velocity (0 when the
+///   normal is free: then the wall is a one-sided contact that stops the approach). The normal reaction
+///   over the step is the impulse that stops that approach, m w_n (a force m w_n / dt: the normal nodal
+///   momentum plus the normal force, so it cannot be inflated by a rectified force alone), and the
+///   Coulomb limit caps the tangential impulse at mu m w_n: the tangential velocity is reduced by
+///   min(|v*_t|, mu w_n), never reversed (stick when |v*_t| <= mu w_n).
+/// - Prescribed components then take their value.
+/// The rate (v_new - v_old) / dt is what the particles get under FLIP: at a wall it removes the
+/// particles' normal velocity into the wall together with the nodal one.
+inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a, double dt, const NodeConstraint& c) {
+  Vec2 v = v_old + dt * a;
+  if (c.friction_dir >= 0) {
+    const int dn = c.friction_dir;
+    const bool normal_fixed = (c.fixed >> dn) & 1u;
+    const double v_wall = normal_fixed ? c.fixed_velocity[dn] : 0.0;
+    const double approach = c.sign_n * (v[dn] - v_wall);
+    if (approach > 0.0) {
+      const double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
+      Vec2 vt = v;
+      vt[dn] = 0.0;
+      const double slip = vt.norm();
+      v = slip <= limit ? Vec2::Zero() : Vec2((1.0 - limit / slip) * vt);
+      v[dn] = v_wall;
+    }
+  }
+  for (int d = 0; d < 2; ++d)
+    if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
+  return {v, (v - v_old) / dt};
+}
+
+}  // namespace mpm::core
