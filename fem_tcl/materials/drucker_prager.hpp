@@ -61,6 +61,7 @@ class DruckerPrager final : public NDMaterial {
   std::string type_name() const override { return "DruckerPrager"; }
   /// Plane strain only (OpenSees' getCopy("PlaneStrain")); plane stress throws common::InputError.
   std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
+  std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<DruckerPrager>(*this); }
 
   void set_trial_strain(const Vector3& strain) override;
   const Vector3& strain() const override { return strain2d_; }
