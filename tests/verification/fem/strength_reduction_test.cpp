@@ -107,7 +107,7 @@ TEST(StrengthReduction, FindsAFactorBelowOne) {
   std::printf("Bishop, c = 1 kPa: F = %.4f\n", bishop_f);
   EXPECT_LT(bishop_f, 1.0);
   EXPECT_LT(run.factor, 1.0);
-  EXPECT_CLOSE(run.factor, bishop_f, 0.0, 0.15);
+  EXPECT_CLOSE(run.factor, bishop_f, 0.0, 0.05);  // 0.841 measured
 }
 
 }  // namespace
