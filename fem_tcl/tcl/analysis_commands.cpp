@@ -156,7 +156,7 @@ std::string cmd_strength_reduction(Context& ctx, common::CommandArgs& args) {
     if (it == ctx.materials.end()) args.fail("nDMaterial " + std::to_string(tag) + " does not exist");
     if (!it->second->reducible_strength()) {
       args.fail("nDMaterial " + std::to_string(tag) + " (" + it->second->type_name() +
-                ") has no strength to reduce (MohrCoulomb has)");
+                ") has no strength to reduce (MohrCoulomb and DruckerPrager have)");
     }
   }
   if (!ctx.chain.transient || *ctx.chain.transient) {

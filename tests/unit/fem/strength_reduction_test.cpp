@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "fem_tcl/materials/drucker_prager.hpp"
 #include "fem_tcl/materials/mohr_coulomb.hpp"
 #include "fem_tcl/tcl/interpreter.hpp"
 #include "support/scratch.hpp"
@@ -94,6 +95,26 @@ TEST(StrengthReduction, MohrCoulombCohesionIsDividedByTheFactor) {
   m->set_trial_strain({0.0, 0.0, 0.01});
   EXPECT_CLOSE(std::abs(m->stress()[2]), 10.0, 1e-9, 1e-9);
   EXPECT_THROW(m->reducible_strength()->set_strength_reduction(0.0), common::InputError);
+}
+
+TEST(StrengthReduction, DruckerPragerReducesThroughThePlaneStrainMatch) {
+  // phi = 30 deg, c = 10 kPa, psi = 0 matched in plane strain (Drucker & Prager 1952): rho = sqrt(2) tan phi /
+  // sqrt(9 + 12 tan^2 phi) = 0.22646, sigma_y = sqrt(3) 3 c / sqrt(9 + 12 tan^2 phi) = 14.4115. F = 2: tan phi / 2
+  // and c / 2 give rho = sqrt(2) 0.288675 / sqrt(10) = 0.129099, sigma_y = sqrt(3) 15 / sqrt(10) = 8.21584.
+  const double t = std::tan(30.0 * 3.14159265358979323846 / 180.0);
+  const double rho = std::sqrt(2.0) * t / std::sqrt(9.0 + 12.0 * t * t);
+  const double sigma_y = std::sqrt(3.0) * 30.0 / std::sqrt(9.0 + 12.0 * t * t);
+  fem::materials::DruckerPrager dp(3, {1.0e4, 5.0e3, sigma_y, rho, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 101.0});
+  ASSERT_NE(dp.reducible_strength(), nullptr);
+  dp.set_strength_reduction(2.0);
+  EXPECT_CLOSE(dp.to_json()["rho"].get<double>(), std::sqrt(2.0) * 0.5 * t / std::sqrt(9.0 + 3.0 * t * t), 1e-12, 1e-12);
+  EXPECT_CLOSE(dp.to_json()["sigma_y"].get<double>(), std::sqrt(3.0) * 15.0 / std::sqrt(9.0 + 3.0 * t * t), 1e-12, 1e-12);
+  EXPECT_CLOSE(dp.to_json()["rho_bar"].get<double>(), 0.0, 1e-15, 0.0);
+  dp.set_strength_reduction(1.0);  // back to the defined strength
+  EXPECT_CLOSE(dp.to_json()["rho"].get<double>(), rho, 1e-12, 1e-12);
+  EXPECT_CLOSE(dp.to_json()["sigma_y"].get<double>(), sigma_y, 1e-12, 1e-12);
+  fem::materials::DruckerPrager steep(4, {1.0e4, 5.0e3, 10.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 2.0, 101.0});
+  EXPECT_THROW(steep.set_strength_reduction(1.5), common::InputError);
 }
 
 TEST(StrengthReduction, RestoresTheStateAndWritesNoRecorderLines) {
