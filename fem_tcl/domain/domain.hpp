@@ -81,6 +81,9 @@ class Domain {
   /// Reactions = -(nodal load) + sum of element resisting forces (quirk 7).
   void compute_reactions();
   void record();
+  /// Trial commits (`strengthReduction`'s trials): commits still commit, but call no recorder and check no
+  /// mesh quality, so the recorders and the once-only warnings see only the script's own analyses.
+  void set_trial_commits(bool on) { trial_commits_ = on; }
   void flush_recorders();
   void set_rayleigh(const RayleighFactors& f);
 
@@ -107,6 +110,7 @@ class Domain {
   double mesh_warn_ratio_ = 0.5;
   bool warned_ratio_ = false;
   bool warned_inverted_ = false;
+  bool trial_commits_ = false;
   void check_mesh_quality();
 };
 

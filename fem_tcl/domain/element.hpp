@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,6 +30,11 @@ struct RayleighFactors {
   double beta_k0 = 0.0;
   double beta_kc = 0.0;
   bool any() const { return alpha_m != 0.0 || beta_k != 0.0 || beta_k0 != 0.0 || beta_kc != 0.0; }
+};
+
+/// An element's saved state (its materials' trial and committed states), opaque to the domain.
+struct ElementState {
+  virtual ~ElementState() = default;
 };
 
 class Element {
@@ -100,6 +106,12 @@ class Element {
   /// `setParameter` forwarded to the materials; false when no material knows `name`.
   virtual bool set_parameter(std::string_view name, double value) = 0;
   virtual bool update_material_stage(int stage) = 0;
+  /// Sets the strength reduction factor of every material point whose material has a reducible strength
+  /// (materials/reducible_strength.hpp); false when the element's material has none.
+  virtual bool reduce_strength(double factor) = 0;
+  /// A copy of the material states, and putting it back (`strengthReduction` tries and undoes).
+  virtual std::unique_ptr<ElementState> save_state() const = 0;
+  virtual void restore_state(const ElementState& state) = 0;
   /// Tag of the nDMaterial the element was built from.
   virtual int material_tag() const = 0;
   virtual nlohmann::ordered_json to_json() const = 0;

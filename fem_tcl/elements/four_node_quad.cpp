@@ -213,3 +213,13 @@ std::unique_ptr<domain::Element> parse_four_node_quad(common::CommandArgs& args,
 }
 
 }  // namespace fem::elements
+
+namespace fem::elements {
+
+bool FourNodeQuad::reduce_strength(double factor) { return reduce_material_points_strength(materials_, factor); }
+
+std::unique_ptr<domain::ElementState> FourNodeQuad::save_state() const { return save_material_points(materials_); }
+
+void FourNodeQuad::restore_state(const domain::ElementState& state) { restore_material_points(materials_, state); }
+
+}  // namespace fem::elements

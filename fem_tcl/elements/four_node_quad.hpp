@@ -9,6 +9,7 @@
 #include "common/command_args.hpp"
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/elements/element_registry.hpp"
+#include "fem_tcl/elements/material_state.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
 
 namespace fem::elements {
@@ -36,6 +37,9 @@ class FourNodeQuad final : public domain::Element {
   std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
   bool set_parameter(std::string_view name, double value) override;
   bool update_material_stage(int stage) override;
+  bool reduce_strength(double factor) override;
+  std::unique_ptr<domain::ElementState> save_state() const override;
+  void restore_state(const domain::ElementState& state) override;
   nlohmann::ordered_json to_json() const override;
   int material_tag() const override { return material_tag_; }
 

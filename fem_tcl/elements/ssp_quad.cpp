@@ -171,3 +171,19 @@ std::unique_ptr<domain::Element> parse_ssp_quad(common::CommandArgs& args, const
 }
 
 }  // namespace fem::elements
+
+namespace fem::elements {
+
+bool SSPquad::reduce_strength(double factor) {
+  return reduce_material_points_strength(std::span(&material_, 1), factor);
+}
+
+std::unique_ptr<domain::ElementState> SSPquad::save_state() const {
+  return save_material_points(std::span(&material_, 1));
+}
+
+void SSPquad::restore_state(const domain::ElementState& state) {
+  restore_material_points(std::span(&material_, 1), state);
+}
+
+}  // namespace fem::elements

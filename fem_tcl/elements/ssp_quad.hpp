@@ -11,6 +11,7 @@
 #include "common/command_args.hpp"
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/elements/element_registry.hpp"
+#include "fem_tcl/elements/material_state.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
 
 namespace fem::elements {
@@ -40,6 +41,9 @@ class SSPquad final : public domain::Element {
   std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
   bool set_parameter(std::string_view name, double value) override { return material_->set_parameter(name, value); }
   bool update_material_stage(int stage) override { return material_->update_stage(stage); }
+  bool reduce_strength(double factor) override;
+  std::unique_ptr<domain::ElementState> save_state() const override;
+  void restore_state(const domain::ElementState& state) override;
   nlohmann::ordered_json to_json() const override;
   int material_tag() const override { return material_tag_; }
   const materials::NDMaterial& material() const { return *material_; }

@@ -303,6 +303,36 @@ void DruckerPrager::commit_state() {
 
 void DruckerPrager::revert_to_start() { initialize(); }
 
+void DruckerPrager::set_strength_reduction(double factor) {
+  const std::string where = "nDMaterial DruckerPrager " + std::to_string(tag());
+  if (!(factor > 0.0) || !std::isfinite(factor)) {
+    throw common::InputError(where, "expected a strength reduction factor > 0, got " + std::to_string(factor));
+  }
+  // Reductions compose (tan phi / F1 / F2 = tan phi / (F1 F2)), so the step from the factor in force is applied.
+  const double step = factor / strength_factor_;
+  const auto tan_of = [&](double rho, const char* name) {
+    const double a = rho / std::sqrt(2.0);
+    if (!(12.0 * a * a < 1.0)) {
+      throw common::InputError(where, std::string("cannot reduce its strength: ") + name + " = " + std::to_string(rho) +
+                                          " >= 1/sqrt(6) has no plane-strain Mohr-Coulomb friction angle");
+    }
+    return 3.0 * a / std::sqrt(1.0 - 12.0 * a * a);
+  };
+  const auto rho_of = [](double t) { return std::sqrt(2.0) * t / std::sqrt(9.0 + 12.0 * t * t); };
+  const double t = tan_of(params_.rho, "rho"), t_bar = tan_of(params_.rho_bar, "rho_bar");
+  const double reduced = t / step;
+  const double cohesion_scale = std::sqrt(9.0 + 12.0 * t * t) / std::sqrt(9.0 + 12.0 * reduced * reduced) / step;
+  params_.rho = rho_of(reduced);
+  params_.rho_bar = rho_of(t_bar / step);
+  params_.sigma_y *= cohesion_scale;
+  params_.k_inf *= cohesion_scale;
+  params_.k_o *= cohesion_scale;
+  params_.hardening *= cohesion_scale;
+  h_prime_ = (1.0 - params_.theta) * params_.hardening;
+  update_tension_strength();
+  strength_factor_ = factor;
+}
+
 bool DruckerPrager::set_parameter(std::string_view name, double value) {
   if (name == "materialState") {
     elastic_flag_ = static_cast<int>(value);

@@ -49,7 +49,7 @@ struct DruckerPragerParameters {
   double p_atm = 101.0;        ///< atmospheric pressure for materialState 1
 };
 
-class DruckerPrager final : public NDMaterial {
+class DruckerPrager final : public NDMaterial, public ReducibleStrength {
  public:
   using Vector6d = Eigen::Matrix<double, 6, 1>;
   using Matrix6d = Eigen::Matrix<double, 6, 6>;
@@ -61,6 +61,15 @@ class DruckerPrager final : public NDMaterial {
   std::string type_name() const override { return "DruckerPrager"; }
   /// Plane strain only (OpenSees' getCopy("PlaneStrain")); plane stress throws common::InputError.
   std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
+  std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<DruckerPrager>(*this); }
+  ReducibleStrength* reducible_strength() override { return this; }
+  /// Strength reduction through the plane-strain Mohr-Coulomb match of the cone (Drucker & Prager 1952,
+  /// Q. Appl. Math. 10(2):157-165): rho / sqrt(2) = tan phi / sqrt(9 + 12 tan^2 phi), sigma_y / sqrt(3) =
+  /// 3 c / sqrt(9 + 12 tan^2 phi). tan phi and c are divided by F and rho, sigma_y mapped back; rho_bar likewise
+  /// with tan psi; the hardening stresses Kinf, Ko and H scale with sigma_y. Throws common::InputError when
+  /// rho or rho_bar >= 1/sqrt(6) (no Mohr-Coulomb friction angle matches).
+  void set_strength_reduction(double factor) override;
+  double strength_reduction() const override { return strength_factor_; }
 
   void set_trial_strain(const Vector3& strain) override;
   const Vector3& strain() const override { return strain2d_; }
@@ -102,6 +111,7 @@ class DruckerPrager final : public NDMaterial {
   double t0_ = 0.0;       // tension cutoff of I1
   double h_prime_ = 0.0;  // kinematic hardening modulus (1 - theta) H
   int elastic_flag_ = 2;
+  double strength_factor_ = 1.0;  ///< strength reduction factor in force
   bool modulus_flag_ = true;  // OpenSees' mFlag: the state-1 modulus update is still to do
 
   Vector6d eps_ = Vector6d::Zero();

@@ -16,6 +16,7 @@ class ElasticIsotropic final : public NDMaterial {
 
   std::string type_name() const override { return "ElasticIsotropic"; }
   std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
+  std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<ElasticIsotropic>(*this); }
 
   void set_trial_strain(const Vector3& strain) override;
   const Vector3& strain() const override { return strain_; }

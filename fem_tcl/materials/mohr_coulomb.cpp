@@ -33,8 +33,21 @@ void MohrCoulomb::validate() const {
 
 void MohrCoulomb::update_constants() {
   elasticity_ = constitutive::IsotropicElasticity::from_young_poisson(params_.young, params_.poisson);
-  strength_ = {params_.friction_deg * kDegree, params_.dilation_deg * kDegree, params_.cohesion,
-               params_.tension ? *params_.tension : std::numeric_limits<double>::infinity()};
+  // Shear strength reduction (Griffiths & Lane 1999, eqs. 1-2): F = 1 leaves the defined strength.
+  const double f = strength_factor_;
+  const double phi = f == 1.0 ? params_.friction_deg * kDegree : std::atan(std::tan(params_.friction_deg * kDegree) / f);
+  const double psi = f == 1.0 ? params_.dilation_deg * kDegree : std::atan(std::tan(params_.dilation_deg * kDegree) / f);
+  strength_ = {phi, psi, params_.cohesion / f,
+               params_.tension ? *params_.tension / f : std::numeric_limits<double>::infinity()};
+}
+
+void MohrCoulomb::set_strength_reduction(double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor)) {
+    throw common::InputError("nDMaterial MohrCoulomb " + std::to_string(tag()),
+                             "expected a strength reduction factor > 0, got " + std::to_string(factor));
+  }
+  strength_factor_ = factor;
+  update_constants();
 }
 
 Matrix3 MohrCoulomb::elastic_tangent() const {

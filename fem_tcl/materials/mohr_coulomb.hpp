@@ -27,7 +27,7 @@ struct MohrCoulombParameters {
   std::optional<double> tension;  ///< Rankine cutoff T on the major principal stress; none when absent
 };
 
-class MohrCoulomb final : public NDMaterial {
+class MohrCoulomb final : public NDMaterial, public ReducibleStrength {
  public:
   /// Throws common::InputError: E > 0, -1 < nu < 0.5, rho >= 0, 0 <= phi < 90, c >= 0, 0 <= psi < 90, T >= 0.
   MohrCoulomb(int tag, const MohrCoulombParameters& params);
@@ -35,6 +35,12 @@ class MohrCoulomb final : public NDMaterial {
   std::string type_name() const override { return "MohrCoulomb"; }
   /// Plane strain only; plane stress throws common::InputError.
   std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
+  std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<MohrCoulomb>(*this); }
+  ReducibleStrength* reducible_strength() override { return this; }
+  /// c / F, atan(tan phi / F), atan(tan psi / F) (reducible_strength.hpp); the tension cutoff T / F.
+  /// The defined parameters (set_parameter, to_json) are unchanged.
+  void set_strength_reduction(double factor) override;
+  double strength_reduction() const override { return strength_factor_; }
 
   void set_trial_strain(const Vector3& strain) override;
   const Vector3& strain() const override { return strain_; }
@@ -72,6 +78,7 @@ class MohrCoulomb final : public NDMaterial {
   constitutive::IsotropicElasticity elasticity_{};
   constitutive::MohrCoulombStrength strength_{};
   int stage_ = 0;
+  double strength_factor_ = 1.0;  ///< strength reduction factor F in force (1: the defined strength)
 
   // committed
   Vector3 committed_strain_ = Vector3::Zero();

@@ -15,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fem_tcl/materials/reducible_strength.hpp"
+
 namespace fem::materials {
 
 using Vector3 = Eigen::Vector3d;
@@ -36,6 +38,11 @@ class NDMaterial {
   /// A fresh copy for one integration point, in the start state, for `plane` (OpenSees getCopy(type)).
   /// Throws common::InputError when the material does not support `plane`.
   virtual std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const = 0;
+  /// A copy in this material's current state (trial and committed), for analyses that try and undo
+  /// (`strengthReduction` restores every integration point from such copies).
+  virtual std::unique_ptr<NDMaterial> clone() const = 0;
+  /// The strength a factor-of-safety analysis can reduce, or null when the material has none (elastic).
+  virtual ReducibleStrength* reducible_strength() { return nullptr; }
 
   // --- state protocol -----------------------------------------------------------------------
   /// Sets the total trial strain (exx, eyy, gxy) and computes the trial stress and tangent.

@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "fem_tcl/analysis/strength_reduction.hpp"
 #include "fem_tcl/tcl/commands.hpp"
 
 namespace fem::tcl {
@@ -146,6 +147,26 @@ std::string cmd_analyze(Context& ctx, common::CommandArgs& args) {
   const int result = ctx.analysis->analyze(steps, dt);
   if (result < 0) ++ctx.failed_analyses;
   return std::to_string(result);
+}
+
+std::string cmd_strength_reduction(Context& ctx, common::CommandArgs& args) {
+  const analysis::StrengthReductionOptions options = analysis::parse_strength_reduction(args);
+  for (int tag : options.materials) {
+    auto it = ctx.materials.find(tag);
+    if (it == ctx.materials.end()) args.fail("nDMaterial " + std::to_string(tag) + " does not exist");
+    if (!it->second->reducible_strength()) {
+      args.fail("nDMaterial " + std::to_string(tag) + " (" + it->second->type_name() +
+                ") has no strength to reduce (MohrCoulomb and DruckerPrager have)");
+    }
+  }
+  if (!ctx.chain.transient || *ctx.chain.transient) {
+    args.fail("needs a static analysis: define 'integrator LoadControl' and 'analysis Static' first");
+  }
+  const analysis::StrengthReductionResult result =
+      analysis::strength_reduction(ctx.domain, complete_chain(ctx), options, std::cerr);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6g", result.factor);
+  return text;
 }
 
 std::string cmd_load_const(Context& ctx, common::CommandArgs& args) {

@@ -32,6 +32,7 @@ constexpr std::array kCommands{
     CommandEntry{"integrator", "integrator LoadControl dLambda | Newmark gamma beta | HHT alpha <gamma beta> | CentralDifference", 0, cmd_integrator},
     CommandEntry{"analysis", "analysis Static|Transient", 0, cmd_analysis},
     CommandEntry{"analyze", "analyze numSteps <dt>", 0, cmd_analyze},
+    CommandEntry{"strengthReduction", "strengthReduction -materials {tags} <-bracket Flo Fhi> <-tol dF> <-criterion displacement|convergence> <-displacementRatio r> <-displacementLimit d> <-steps n> <-maxCuts m> <-maxTrials k>", 0, cmd_strength_reduction},
     CommandEntry{"loadConst", "loadConst <-time t>", 0, cmd_load_const},
     CommandEntry{"setTime", "setTime t", 0, cmd_set_time},
     CommandEntry{"getTime", "getTime <format>", 0, cmd_get_time},

@@ -53,6 +53,7 @@ std::string cmd_integrator(Context&, common::CommandArgs&);
 std::string cmd_analysis(Context&, common::CommandArgs&);
 std::string cmd_analyze(Context&, common::CommandArgs&);
 std::string cmd_load_const(Context&, common::CommandArgs&);
+std::string cmd_strength_reduction(Context&, common::CommandArgs&);
 std::string cmd_set_time(Context&, common::CommandArgs&);
 std::string cmd_get_time(Context&, common::CommandArgs&);
 std::string cmd_wipe(Context&, common::CommandArgs&);
