@@ -15,6 +15,7 @@ constexpr std::array kCommands{
     CommandEntry{"mass", "mass nodeTag m1 m2", 1, cmd_mass},
     CommandEntry{"nDMaterial", "nDMaterial type tag ...", 2, cmd_nd_material},
     CommandEntry{"element", "element type tag ...", 2, cmd_element},
+    CommandEntry{"block2D", "block2D numX numY startNode startEle eleType eleArgs <-numEleNodes 4> {1 x y 2 x y 3 x y 4 x y <5 x y .. 9 x y>}", 4, cmd_block2d},
     CommandEntry{"timeSeries", "timeSeries Constant|Linear|Path tag <options>", 2, cmd_time_series},
     CommandEntry{"pattern", "pattern Plain tag tsTag <-fact f> {body} | pattern UniformExcitation tag dir -accel tsTag <-fact f>", 2, cmd_pattern},
     CommandEntry{"load", "load nodeTag F1 F2", 1, cmd_load},
