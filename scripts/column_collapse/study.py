@@ -286,6 +286,8 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
     def mark_compare_times(ax):
         for tc in (3.0, 5.0):
             ax.axvline(tc / tau, ls=":", color="0.6", lw=0.7)
+            ax.text(tc / tau, 1.0, " %g s" % tc, transform=ax.get_xaxis_transform(), fontsize=6.5, color="0.4",
+                    va="bottom", ha="center")
     colors = {"fem": "k", "mpm": "tab:blue"}
     cyc = ["tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]
     for k, t in enumerate(TRANSFERS):
