@@ -51,6 +51,9 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # the driver's own options: name -> takes a value
 DRIVER_OPTIONS = {"--transfer": True, "--duration": True, "--out": True, "--bin": True, "--threads": True,
                   "--output-every": True, "--moved": True, "--help": False, "-h": False}
+# what the driver writes into DIR (removed first, so a failed run never leaves an older one behind)
+OUTPUTS = ("fem", "mpm", "series.csv", "summary.md", "fem_mesh_T.png", "particles_T.png", "particles_end.png",
+           "runout.png", "energy.png")
 SET_BY_DRIVER = ("--model", "--disp", "--vel", "--stress", "--time", "--row", "--out")
 
 
@@ -277,6 +280,9 @@ def main(argv=None):
         pipeline.die(PROG, "--duration: expected a time > 0 s, got %g" % args.duration)
     if not (args.transfer >= 0):
         pipeline.die(PROG, "--transfer: expected a time >= 0 s, got %g" % args.transfer)
+    for name, value in (("--moved", args.moved), ("--output-every", args.output_every), ("--threads", args.threads)):
+        if value is not None and not (value > 0):
+            pipeline.die(PROG, "%s: expected a value > 0, got %g" % (name, value))
     if option_given(forward, "--duration") or option_given(forward, "--nsteps"):
         pipeline.die(PROG, "give the MPM time with the driver's --duration")
     name = os.path.splitext(os.path.basename(args.model))[0]
@@ -287,6 +293,7 @@ def main(argv=None):
     except pipeline.PipelineError as e:
         pipeline.die(PROG, str(e))
     os.makedirs(out, exist_ok=True)
+    pipeline.remove_outputs(out, OUTPUTS)
     command = [PROG] + argv
     walls = {}
     stage = "FEM"

@@ -8,6 +8,7 @@ The FEM output contract (what a script run by `fem_tcl SCRIPT OUTDIR ...` must l
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -68,11 +69,17 @@ def check_fem_outputs(fem_dir, script="the FEM script"):
                                 "model.json (print -JSON -file $out/model.json), disp.out and vel.out (recorder Node "
                                 "-time ... disp|vel), stress.out (recorder Element -time ... stress3D)"
                                 % (script, name, fem_dir), bad_input=True)
-    try:
-        with open(os.path.join(fem_dir, "model.json")) as f:
-            json.load(f)
-    except ValueError:
-        pass  # OpenSees 3.8 writes invalid JSON for some materials: fem2mpm reads it line by line
+
+
+def remove_outputs(folder, names):
+    """Removes what an earlier run left under these names in folder (files or folders), so that a failed run
+    never leaves an older, complete-looking output behind."""
+    for name in names:
+        p = os.path.join(folder, name)
+        if os.path.isdir(p):
+            shutil.rmtree(p)
+        elif os.path.exists(p):
+            os.remove(p)
 
 
 def run_fem2mpm(bins, fem_dir, out, t_transfer, options=(), logfile=None):
