@@ -16,6 +16,7 @@ constexpr std::array kCommands{
     CommandEntry{"nDMaterial", "nDMaterial type tag ...", 2, cmd_nd_material},
     CommandEntry{"uniaxialMaterial", "uniaxialMaterial Elastic tag E <eta> <Eneg> | Viscous tag C alpha <minVel>", 2, cmd_uniaxial_material},
     CommandEntry{"element", "element type tag ...", 2, cmd_element},
+    CommandEntry{"block2D", "block2D numX numY startNode startEle eleType eleArgs <-numEleNodes 4> {1 x y 2 x y 3 x y 4 x y <5 x y .. 9 x y>}", 4, cmd_block2d},
     CommandEntry{"timeSeries", "timeSeries Constant|Linear tag <-factor f> | Path tag -dt dt -values {..}|-filePath f <-factor f> <-useLast> <-prependZero> <-startTime t> | Path tag -time {..} -values {..} | -fileTime ft -filePath fv | Trig|Sine tag tStart tEnd period <-phaseShift p> <-factor f> <-zeroShift z> | Rectangular tag tStart tEnd <-factor f> | Pulse tag tStart tEnd period <-width w> <-phaseShift p> <-factor f> <-zeroShift z>", 2, cmd_time_series},
     CommandEntry{"pattern", "pattern Plain tag tsTag|{series} <-fact f> {body} | pattern UniformExcitation tag dir -accel tsTag|{series} <-vel0 v> <-fact f>", 2, cmd_pattern},
     CommandEntry{"load", "load nodeTag F1 F2", 1, cmd_load},

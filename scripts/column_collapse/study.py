@@ -17,13 +17,10 @@ Quick default: 2 m FEM elements and MPM cells, 2 x 2 particles per cell. --full:
 """
 import argparse
 import concurrent.futures
-import csv
-import glob
 import json
 import math
 import os
 import shutil
-import subprocess
 import sys
 import time
 
@@ -31,6 +28,9 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+from geoflow import metrics, pipeline, plots  # noqa: E402  (scripts/geoflow: shared with scripts/hybrid_run.py)
+from geoflow.metrics import read_series, read_particles, particle_steps, particle_profile  # noqa: E402
 
 # The reference scene (DESIGN.md), SI units for MPM; the FEM script works in kN, m, s, kPa, Mg/m3.
 G = 9.81
@@ -77,42 +77,29 @@ def log(msg):
     print(msg, flush=True)
 
 
-def run_cmd(cmd, cwd=None, logfile=None):
-    """Runs cmd, returns wall seconds; raises with the tail of the log on failure."""
-    t0 = time.perf_counter()
-    with open(logfile, "w") if logfile else open(os.devnull, "w") as f:
-        r = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
-    wall = time.perf_counter() - t0
-    if r.returncode != 0:
-        tail = open(logfile).read()[-2000:] if logfile else ""
-        raise RuntimeError("command failed (%d): %s\n%s" % (r.returncode, " ".join(cmd), tail))
-    return wall
-
-
 # ----------------------------------------------------------------------------------------------
 # Runs
 # ----------------------------------------------------------------------------------------------
 
 def run_fem(bins, fem_script, scene, out, tend):
+    """The FEM-only run to tend; past an inverted element it goes on (`-on-inversion continue`, as the paper's
+    FEM run went on to 5 s); the figures draw it dashed from the first inversion on."""
     d = os.path.join(out, "fem")
-    os.makedirs(d, exist_ok=True)
-    cmd = [bins["fem_tcl"], fem_script, d, "-width", str(scene.width), "-height", str(scene.height),
-           "-cell", str(scene.cell), "-tend", str(tend), "-dt", str(scene.fem_dt), "-record", str(scene.record),
-           "-phi", str(PHI), "-cohesion", str(COHESION / 1000.0)]
-    wall = run_cmd(cmd, logfile=os.path.join(d, "fem_tcl.log"))
+    args = ["-width", str(scene.width), "-height", str(scene.height), "-cell", str(scene.cell), "-tend", str(tend),
+            "-dt", str(scene.fem_dt), "-record", str(scene.record), "-phi", str(PHI), "-cohesion", str(COHESION / 1000.0),
+            "-on-inversion", "continue"]
+    wall = pipeline.run_fem_script(bins, fem_script, d, args)
     return {"name": "fem", "kind": "fem", "dir": d, "wall": {"fem": wall}}
 
 
 def tune_deck(deck_path, smoothing="none"):
     """Study settings the bridge has no option for: automatic dt (CFL), FLIP/PIC blend, stress smoothing."""
-    with open(deck_path) as f:
-        deck = json.load(f)
-    a = deck["analysis"]
-    a["cfl"] = CFL
-    a["pic_blend"] = PIC_BLEND
-    a["stress_smoothing"] = smoothing
-    with open(deck_path, "w") as f:
-        json.dump(deck, f, indent=2)
+    def edit(deck):
+        a = deck["analysis"]
+        a["cfl"] = CFL
+        a["pic_blend"] = PIC_BLEND
+        a["stress_smoothing"] = smoothing
+    pipeline.edit_deck(deck_path, edit)
 
 
 def mpm_nsteps(scene, duration):
@@ -133,19 +120,14 @@ def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads):
     duration = scene.t_total - t_transfer
     nsteps, dt = mpm_nsteps(scene, duration)
     out_steps = max(1, int(round(scene.out_every / dt)))
-    cmd = [bins["fem2mpm"], "--model", os.path.join(fem_dir, "model.json"), "--disp", os.path.join(fem_dir, "disp.out"),
-           "--vel", os.path.join(fem_dir, "vel.out"), "--stress", os.path.join(fem_dir, "stress.out"),
-           "--time", "%g" % t_transfer, "--units", "kN", "--out", d, "--ppd", str(scene.ppd),
-           "--cell-size", str(scene.cell), "--extent", str(x0), str(x1), str(y0), str(y1), "--base-y", "0",
-           "--right-wall", "none", "--base", "friction", "--base-friction", str(BASE_MU),
-           "--scheme", SCHEME, "--dt", repr(dt), "--nsteps", str(nsteps), "--output-steps", str(out_steps),
-           "--material-type", "mohr-coulomb", "--phi", str(PHI), "--psi", str(PSI), "--cohesion", str(COHESION / 1000.0)]
-    os.makedirs(out, exist_ok=True)
-    w_bridge = run_cmd(cmd, logfile=os.path.join(out, name + "_fem2mpm.log"))
-    shutil.move(os.path.join(out, name + "_fem2mpm.log"), os.path.join(d, "fem2mpm.log"))
+    options = ["--units", "kN", "--ppd", str(scene.ppd),
+               "--cell-size", str(scene.cell), "--extent", str(x0), str(x1), str(y0), str(y1), "--base-y", "0",
+               "--right-wall", "none", "--base", "friction", "--base-friction", str(BASE_MU),
+               "--scheme", SCHEME, "--dt", repr(dt), "--nsteps", str(nsteps), "--output-steps", str(out_steps),
+               "--material-type", "mohr-coulomb", "--phi", str(PHI), "--psi", str(PSI), "--cohesion", str(COHESION / 1000.0)]
+    w_bridge = pipeline.run_fem2mpm(bins, fem_dir, d, t_transfer, options)
     tune_deck(os.path.join(d, "mpm.json"))
-    w_mpm = run_cmd([bins["mpm"], "-f", d + "/", "-i", "mpm.json", "--threads", str(threads)],
-                    logfile=os.path.join(d, "mpm.log"))
+    w_mpm = pipeline.run_mpm(bins, d, threads)
     return {"name": name, "kind": "hybrid", "dir": d, "t0": t_transfer, "wall": {"fem2mpm": w_bridge, "mpm": w_mpm},
             "results": os.path.join(d, "results", "column")}
 
@@ -223,7 +205,7 @@ def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", durati
     if os.path.isdir(d):
         shutil.rmtree(d)
     write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend)
-    w = run_cmd([bins["mpm"], "-f", d + "/", "-i", "mpm.json", "--threads", str(threads)], logfile=os.path.join(d, "mpm.log"))
+    w = pipeline.run_mpm(bins, d, threads)
     with open(os.path.join(d, "wall.txt"), "w") as f:
         f.write("%.3f\n" % w)
     return {"name": name, "kind": "mpm", "dir": d, "t0": 0.0, "wall": {"mpm": w},
@@ -235,132 +217,19 @@ def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", durati
 # Metrics
 # ----------------------------------------------------------------------------------------------
 
-def read_series(results_dir):
-    with open(os.path.join(results_dir, "series.csv")) as f:
-        rows = list(csv.DictReader(f))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
-
-
-def read_particles(path):
-    import h5py
-    with h5py.File(path, "r") as f:
-        t = f["table"][...]
-    return {k: np.asarray(t[k], dtype=float) for k in ("coord_x", "coord_y", "velocity_x", "velocity_y", "mass", "tau_xy")}
-
-
-def state_metrics(x, y, vx, vy, m):
-    return {"L": np.percentile(x, 98), "H": np.percentile(y, 99.5), "PE": float(np.sum(m * G * y)),
-            "KEx": float(np.sum(0.5 * m * vx ** 2)), "KEy": float(np.sum(0.5 * m * vy ** 2))}
-
-
-def particle_steps(results_dir):
-    """{step: path} of the particle files of a run."""
-    files = {}
-    for p in glob.glob(os.path.join(results_dir, "particles*.h5")):
-        s = os.path.basename(p)[len("particles"):-3]
-        if s.isdigit():
-            files[int(s)] = p
-    return files
-
-
 def mpm_run_series(run, fem=None):
     """Time series of a MPM run on TOTAL time: the transfer (or initial) state, then series.csv."""
-    res = run["results"]
-    steps = particle_steps(res)
-    first = steps[min(steps)]   # hybrids: the fem2mpm file (step 0); MPM only: the first output
-    s = read_series(res)
-    t = s["time"] + run["t0"]
-    cols = {"t": t, "L": s["runout_x_p98"], "H": s["height_y_p995"], "PE": s["potential_energy"],
-            "KEx": s["kinetic_energy_x"], "KEy": s["kinetic_energy_y"]}
-    if run["kind"] == "hybrid":
-        p = read_particles(first)
-        m0 = state_metrics(p["coord_x"], p["coord_y"], p["velocity_x"], p["velocity_y"], p["mass"])
-        for k in ("L", "H", "PE", "KEx", "KEy"):
-            cols[k] = np.concatenate([[m0[k]], cols[k]])
-        cols["t"] = np.concatenate([[run["t0"]], cols["t"]])
-    return cols
-
-
-def load_fem_model(fem_dir):
-    with open(os.path.join(fem_dir, "model.json")) as f:
-        model = json.load(f)
-    geo = model["StructuralAnalysisModel"]["geometry"]
-    nodes = {n["name"]: n["crd"] for n in geo["nodes"]}
-    tags = sorted(nodes)
-    xy = np.array([nodes[t][:2] for t in tags], dtype=float)
-    index = {t: k for k, t in enumerate(tags)}
-    elems = np.array([[index[n] for n in e["nodes"]] for e in geo["elements"]], dtype=int)
-    return xy, elems
-
-
-def fem_last_time(fem_dir):
-    """Time of the last complete row of the FEM displacement recorder."""
-    last = 0.0
-    with open(os.path.join(fem_dir, "disp.out")) as f:
-        for line in f:
-            if line.strip():
-                last = float(line.split(None, 1)[0])
-    return last
-
-
-def read_recorder(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if line.strip():
-                rows.append(np.array(line.split(), dtype=float))
-    n = min(len(r) for r in rows)
-    return np.array([r[:n] for r in rows])
+    return metrics.mpm_run_series(run["results"], run["t0"], run["kind"] == "hybrid")
 
 
 def fem_series(fem_dir, cell):
-    xy, elems = load_fem_model(fem_dir)
-    # lumped nodal masses: element area x rho / 4 to each corner (reference configuration)
-    p = xy[elems]
-    area = 0.5 * np.abs((p[:, 0, 0] * p[:, 1, 1] - p[:, 1, 0] * p[:, 0, 1]) + (p[:, 1, 0] * p[:, 2, 1] - p[:, 2, 0] * p[:, 1, 1])
-                        + (p[:, 2, 0] * p[:, 3, 1] - p[:, 3, 0] * p[:, 2, 1]) + (p[:, 3, 0] * p[:, 0, 1] - p[:, 0, 0] * p[:, 3, 1]))
-    m = np.zeros(len(xy))
-    np.add.at(m, elems.ravel(), np.repeat(area * RHO / 4.0, 4))
-    disp = read_recorder(os.path.join(fem_dir, "disp.out"))
-    vel = read_recorder(os.path.join(fem_dir, "vel.out"))
-    # after `loadConst -time 0` the t = 0 row may appear twice: keep the last of equal times
-    keep = np.r_[np.diff(disp[:, 0]) > 1e-12, True]
-    disp = disp[keep]
-    keepv = np.r_[np.diff(vel[:, 0]) > 1e-12, True]
-    vel = vel[keepv]
-    n = min(len(disp), len(vel))
-    out = {k: [] for k in ("t", "L", "H", "PE", "KEx", "KEy")}
-    for r in range(n):
-        u = disp[r, 1:].reshape(-1, 2)
-        v = vel[r, 1:].reshape(-1, 2)
-        x = xy[:, 0] + u[:, 0]
-        y = xy[:, 1] + u[:, 1]
-        s = state_metrics(x, y, v[:, 0], v[:, 1], m)
-        out["t"].append(disp[r, 0])
-        for k in s:
-            out[k].append(s[k])
-    out = {k: np.array(v) for k, v in out.items()}
-    out["minJ_t"], out["minJ"], is_ratio = fem_min_jacobian(fem_dir)
-    out["minJ0"] = 1.0 if is_ratio else cell * cell / 4.0   # corner det J of an undistorted square element
+    out, xy, disp = metrics.fem_series(fem_dir, RHO)
+    t_q, det_j, ratio = metrics.fem_mesh_quality(fem_dir)
+    out["minJ_t"] = t_q
+    out["minJ"] = ratio if ratio is not None else det_j
+    out["minJ0"] = 1.0 if ratio is not None else cell * cell / 4.0   # corner det J of an undistorted square element
+    out["t_inverted"] = metrics.fem_first_inversion(fem_dir)
     return out, xy, disp
-
-
-def fem_min_jacobian(fem_dir):
-    """The mesh-quality series (fem_tcl's `recorder MeshQuality`: rows `time minDetJ element minRatio element`,
-    minRatio = det J / reference det J): returns time and the ratio (or det J when the file has no ratio)."""
-    cands = [p for p in sorted(glob.glob(os.path.join(fem_dir, "*")))
-             if any(k in os.path.basename(p).lower() for k in ("jac", "quality", "meshq"))
-             and not p.endswith((".log", ".json"))]
-    for p in cands:
-        try:
-            a = read_recorder(p)
-        except (ValueError, OSError):
-            continue
-        if a.ndim == 2 and a.shape[1] >= 4:
-            return a[:, 0], a[:, 3], True
-        if a.ndim == 2 and a.shape[1] >= 2:
-            return a[:, 0], a[:, 1], False
-    return np.array([]), np.array([]), True
 
 
 def fem_outline(xy, u, width, height, cell):
@@ -371,19 +240,6 @@ def fem_outline(xy, u, width, height, cell):
     right = [j * (nx + 1) + nx for j in range(ny, -1, -1)]
     idx = top + right[1:]
     return cur[idx, 0], cur[idx, 1]
-
-
-def particle_profile(x, y, cell):
-    """Free-surface profile of a particle cloud: the highest particle per column of width cell/2."""
-    b = cell
-    k = np.floor(x / b).astype(int)
-    xs, ys = [], []
-    for kk in range(k.min(), k.max() + 1):
-        sel = k == kk
-        if np.any(sel):
-            xs.append((kk + 0.5) * b)
-            ys.append(y[sel].max())
-    return np.array(xs), np.array(ys)
 
 
 def particles_at(run, t_total):
@@ -402,16 +258,7 @@ def particles_at(run, t_total):
 
 def prune_particle_files(run, keep_times):
     """Deletes the particle files not needed for the figures (a full run writes ~13 MB per output)."""
-    res = run["results"]
-    s = read_series(res)
-    tt = s["time"] + run["t0"]
-    keep = {int(s["step"][int(np.argmin(np.abs(tt - t)))]) for t in keep_times if len(tt)}
-    steps = particle_steps(res)
-    keep.add(min(steps))
-    keep.add(max(steps))
-    for st, p in steps.items():
-        if st not in keep:
-            os.remove(p)
+    metrics.prune_particle_files(run["results"], run["t0"], keep_times)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -419,11 +266,28 @@ def prune_particle_files(run, keep_times):
 # ----------------------------------------------------------------------------------------------
 
 def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    plt.rcParams.update({"font.size": 9, "savefig.dpi": 110})
+    """The paper's Figure 5 (profiles, runout and height, energies) and the extra figures. The FEM-only curves
+    are dashed and labelled past the first inverted element (the run went on with -on-inversion continue);
+    dotted lines mark t = 3 and 5 s, where the paper compares the runs."""
+    plt = plots.pyplot()
     tau, L0, H0 = scene.tau_c, scene.width, scene.height
+    fem_series_ = series.get("fem")
+    t_inv = fem_series_.get("t_inverted") if fem_series_ is not None else None
+    inv_label = "past its first inverted element (t = %.3g s)" % t_inv if t_inv is not None else ""
+
+    def draw(ax, name, s, x, y):
+        """One run's curve; FEM only split at its first inversion."""
+        if name == "fem":
+            plots.plot_split_at(ax, x, y, None if t_inv is None else t_inv / tau, colors.get(name),
+                                labels.get(name, name), inv_label)
+        else:
+            ax.plot(x, y, color=colors.get(name), label=labels.get(name, name), lw=1.2)
+
+    def mark_compare_times(ax):
+        for tc in (3.0, 5.0):
+            ax.axvline(tc / tau, ls=":", color="0.6", lw=0.7)
+            ax.text(tc / tau, 1.0, " %g s" % tc, transform=ax.get_xaxis_transform(), fontsize=6.5, color="0.4",
+                    va="bottom", ha="center")
     colors = {"fem": "k", "mpm": "tab:blue"}
     cyc = ["tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown"]
     for k, t in enumerate(TRANSFERS):
@@ -434,16 +298,15 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
     paths = []
 
     def save(fig, name):
-        p = os.path.join(out, name)
-        fig.savefig(p, bbox_inches="tight")
-        plt.close(fig)
-        paths.append(p)
+        paths.append(plots.save(fig, os.path.join(out, name)))
 
     # 1. surface profiles: FEM and the 1 s hybrid at t = 1, 3, 5 s
     fig, axs = plt.subplots(3, 1, figsize=(7, 6.5), sharex=True)
     for ax, t in zip(axs, (1.0, 3.0, 5.0)):
         ax.plot([0, L0, L0], [H0, H0, 0], ":", color="0.6", lw=1, label="initial column")
-        if t in fem_prof:
+        if t in fem_prof and t_inv is not None and t > t_inv:
+            ax.plot(*fem_prof[t], "k--", lw=1.5, label="FEM only (deformed mesh outline), %s" % inv_label)
+        elif t in fem_prof:
             ax.plot(*fem_prof[t], "k-", lw=1.5, label="FEM only (deformed mesh outline)")
         else:
             ax.text(0.6, 0.8, "FEM did not reach t = %g s" % t, transform=ax.transAxes)
@@ -457,15 +320,16 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
         ax.set_aspect("equal")
         ax.set_ylim(0, H0 * 1.1)
         ax.set_xlim(0, L0 * 3.2)
-    axs[0].legend(loc="upper right", fontsize=7)
+    for ax in axs:
+        ax.legend(loc="upper right", fontsize=6.5)
     axs[-1].set_xlabel("x (m)")
     save(fig, "profiles.png")
 
     # 2. runout and height
     fig, axs = plt.subplots(1, 2, figsize=(9, 3.4))
     for name, s in series.items():
-        axs[0].plot(s["t"] / tau, (s["L"] - L0) / L0, color=colors.get(name), label=labels.get(name, name), lw=1.2)
-        axs[1].plot(s["t"] / tau, s["H"] / H0, color=colors.get(name), lw=1.2)
+        draw(axs[0], name, s, s["t"] / tau, (s["L"] - L0) / L0)
+        draw(axs[1], name, s, s["t"] / tau, s["H"] / H0)
     axs[0].axhline(1.53, ls="--", color="0.4", lw=0.8)
     axs[0].text(0.2, 1.56, "empirical 1.53 (a = 0.8)", fontsize=7, color="0.3")
     axs[0].axhline(1.6, ls=":", color="0.4", lw=0.8)
@@ -474,7 +338,8 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
     for ax in axs:
         ax.set_xlabel("t / tau_c")
         ax.grid(alpha=0.3)
-    axs[0].legend(fontsize=7)
+        mark_compare_times(ax)
+    axs[0].legend(fontsize=6.5)
     save(fig, "runout_height.png")
 
     # 3. energies
@@ -483,13 +348,14 @@ def figures(out, scene, series, fem_prof, hybrid_run, snap_runs):
                               ("KEy", "vertical kinetic energy KEy/PE0", "energy_key.png")):
         fig, ax = plt.subplots(figsize=(5.5, 3.4))
         for name, s in series.items():
-            ax.plot(s["t"] / tau, s[key] / s["PE0"], color=colors.get(name), label=labels.get(name, name), lw=1.2)
+            draw(ax, name, s, s["t"] / tau, s[key] / s["PE0"])
+        mark_compare_times(ax)
         if key == "PE":
             ax.axhline(0.6, ls="--", color="0.4", lw=0.8)
         ax.set_xlabel("t / tau_c")
         ax.set_ylabel(title)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=6.5)
         save(fig, fname)
 
     # 4. FEM minimum Jacobian
@@ -535,18 +401,26 @@ def summary_rows(series, walls, scene):
     for name, s in series.items():
         rows.append({"run": name, "t_end": s["t"][-1], "runout": (s["L"][-1] - L0) / L0, "height": s["H"][-1] / H0,
                      "pe": s["PE"][-1] / s["PE0"], "t_kex": s["t"][int(np.argmax(s["KEx"]))] / tau,
-                     "t_key": s["t"][int(np.argmax(s["KEy"]))] / tau, "wall": walls.get(name, {})})
+                     "t_key": s["t"][int(np.argmax(s["KEy"]))] / tau, "wall": walls.get(name, {}),
+                     "t_inverted": s.get("t_inverted")})
     return rows
 
 
-def summary_markdown(rows, scene, mode):
+def summary_markdown(rows, scene, mode, not_possible=None):
+    """The summary table; the FEM row gives the time of its first inverted element (its values past that time
+    come from an inverted mesh), and the transfers that could not be made are listed with the reason."""
     lines = ["| run | end t (s) | runout (L-L0)/L0 | H/H0 | PE/PE0 | t/tau_c at peak KEx | t/tau_c at peak KEy | wall time (s) |",
              "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         w = r["wall"]
         wt = ", ".join("%s %.1f" % (k, v) for k, v in w.items())
-        lines.append("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |" % (r["run"], r["t_end"], r["runout"], r["height"],
+        name = r["run"]
+        if r.get("t_inverted") is not None:
+            name += " (first inverted element at %.3g s)" % r["t_inverted"]
+        lines.append("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |" % (name, r["t_end"], r["runout"], r["height"],
                                                                                r["pe"], r["t_kex"], r["t_key"], wt))
+    for t, why in sorted((not_possible or {}).items()):
+        lines.append("| hyb_%g | not possible: %s | | | | | | |" % (t, why))
     lines.append("| paper (MPM, hybrids) | 20 | ~1.6 (empirical 1.53, Soundararajan 2015) | | ~0.6 | ~1.75 | ~1 | |")
     return "\n".join(lines) + "\n"
 
@@ -685,12 +559,10 @@ def write_sweep_report(out, results):
 # ----------------------------------------------------------------------------------------------
 
 def find_bins(bin_dir):
-    cands = [bin_dir] if bin_dir else [os.path.join(REPO, "build", "bin")]
-    for d in cands:
-        bins = {k: os.path.join(d, k) for k in ("fem_tcl", "fem2mpm", "mpm")}
-        if all(os.access(p, os.X_OK) for p in bins.values()):
-            return bins
-    sys.exit("study.py: error: fem_tcl, fem2mpm and mpm not found in %s (build first: bash scripts/build.sh, or --bin DIR)" % cands[0])
+    try:
+        return pipeline.find_bins(bin_dir, REPO)
+    except pipeline.PipelineError as e:
+        sys.exit("study.py: error: %s" % e)
 
 
 def main(argv=None):
@@ -756,11 +628,17 @@ def main(argv=None):
                 f_smooth[remedy] = ex.submit(run_mpm_only, bins, scene, out, 1, "mpm_" + remedy, remedy, snap_t + 0.5, 0.5)
         runs["fem"] = f_fem.result()
         log("fem done: %.1f s" % runs["fem"]["wall"].get("fem", float("nan")))
-        t_fem = fem_last_time(runs["fem"]["dir"])
-        skipped = [t for t in transfers if t > t_fem + 1e-9]
-        for t in skipped:
-            log("hybrid %g s skipped: the FEM run ended at t = %g s (mesh inverted or not converged)" % (t, t_fem))
-        transfers = [t for t in transfers if t not in skipped]
+        t_fem = metrics.fem_last_time(runs["fem"]["dir"])
+        t_inv = metrics.fem_first_inversion(runs["fem"]["dir"])
+        not_possible = {}
+        for t in transfers:
+            if t > t_fem + 1e-9:
+                not_possible[t] = "the FEM run ended at t = %g s (not converged)" % t_fem
+            elif t_inv is not None and t >= t_inv - 1e-9:
+                not_possible[t] = "the FEM mesh has inverted elements (first at t = %g s)" % t_inv
+        for t, why in not_possible.items():
+            log("hybrid %g s skipped: %s" % (t, why))
+        transfers = [t for t in transfers if t not in not_possible]
         f_h = {t: ex.submit(run_hybrid, bins, scene, out, runs["fem"]["dir"], t, 1) for t in transfers}
         failed = {}
         try:
@@ -811,7 +689,7 @@ def main(argv=None):
                         s["KEx"][k] / s["PE0"], s["KEy"][k] / s["PE0"]))
     walls = {name: r["wall"] for name, r in runs.items()}
     rows = summary_rows(series, walls, scene)
-    table = summary_markdown(rows, scene, mode)
+    table = summary_markdown(rows, scene, mode, not_possible)
     snaps = [("MPM only, no smoothing", runs["mpm"], snap_t)] if "mpm" in runs else []
     for remedy, run in smooth.items():
         snaps.append(("MPM only, %s smoothing" % remedy, run, snap_t))

@@ -1,0 +1,85 @@
+# Procs the examples share (sourced, not run): tying blocks together, the recorders of the hybrid_run.py
+# contract, and the two stages of a slope analysis (elastic gravity, then the Mohr-Coulomb collapse in time).
+
+# Ties every node to the first node found at the same position (within tol) with `equalDOF first node 1 2`:
+# block2D always makes new nodes, so two blocks that share an edge are joined this way (as in OpenSees).
+# Returns the number of ties.
+proc tie_coincident_nodes {{tol 1e-6}} {
+    set first [dict create]
+    set ties 0
+    foreach n [getNodeTags] {
+        set key [format "%.0f,%.0f" [expr {[nodeCoord $n 1] / $tol}] [expr {[nodeCoord $n 2] / $tol}]]
+        if {[dict exists $first $key]} {
+            equalDOF [dict get $first $key] $n 1 2
+            incr ties
+        } else {
+            dict set first $key $n
+        }
+    }
+    return $ties
+}
+
+# The files scripts/hybrid_run.py expects in outdir (its contract): model.json, and every drec seconds the
+# nodal displacements and velocities and the full element stresses; plus the mesh quality every step.
+proc record_for_hybrid {outdir drec} {
+    set nodes [lsort -integer [getNodeTags]]
+    set eles [lsort -integer [getEleTags]]
+    print -JSON -file [file join $outdir model.json]
+    recorder Node -file [file join $outdir disp.out] -time -dT $drec -nodeRange [lindex $nodes 0] [lindex $nodes end] -dof 1 2 disp
+    recorder Node -file [file join $outdir vel.out] -time -dT $drec -nodeRange [lindex $nodes 0] [lindex $nodes end] -dof 1 2 vel
+    recorder Element -file [file join $outdir stress.out] -time -dT $drec -eleRange [lindex $eles 0] [lindex $eles end] stress3D
+    recorder MeshQuality -file [file join $outdir mesh_quality.out] -time
+}
+
+# Stage 1: gravity on the elastic materials (MohrCoulomb stage 0), one linear static step.
+proc gravity_stage {} {
+    constraints Transformation
+    numberer RCM
+    system UmfPack
+    test NormDispIncr 1.0e-10 10
+    algorithm Newton
+    integrator LoadControl 1.0
+    analysis Static
+    if {[analyze 1] != 0} { error "gravity stage: the static step failed" }
+}
+
+# Stage 2: MohrCoulomb (stage 1) for the materials given, Newmark average acceleration from t = 0 to tend in
+# steps of dt (halved up to 6 times where a step fails). The recorders are made here, at t = 0.
+proc collapse_stage {materials outdir tend dt drec} {
+    loadConst -time 0.0
+    wipeAnalysis
+    foreach m $materials { updateMaterialStage -material $m -stage 1 }
+    constraints Transformation
+    numberer RCM
+    system UmfPack
+    test NormDispIncr 1.0e-6 25
+    algorithm KrylovNewton -elasticTangent -maxDim 6
+    integrator Newmark 0.5 0.25
+    analysis Transient
+    record_for_hybrid $outdir $drec
+    record
+    set t 0.0
+    while {$tend - $t > 1e-9} {
+        set h [expr {min($dt, $tend - $t)}]
+        set cuts 0
+        while {[analyze 1 $h] != 0} {
+            if {[incr cuts] > 6} { error [format "collapse stage: no convergence at t = %.6g s" $t] }
+            set h [expr {$h / 2.0}]
+        }
+        set t [getTime]
+    }
+    remove recorders
+    set mj [minJacobian]
+    puts stdout [format "collapse stage: t = %.4g s reached, min corner det J %.4g (element %d)" $t [lindex $mj 0] [lindex $mj 1]]
+}
+
+# `-key value` options into the array named arr (whose defaults it holds); errors name the script.
+proc parse_options {script arr words} {
+    upvar $arr opt
+    if {[llength $words] % 2 != 0} { error "$script: option '[lindex $words end]' has no value" }
+    foreach {key value} $words {
+        if {![info exists opt($key)]} { error "$script: unknown option '$key' (known: [lsort [array names opt]])" }
+        if {![string is double -strict $value] || !($value > 0)} { error "$script: expected a number > 0 after '$key', got '$value'" }
+        set opt($key) $value
+    }
+}

@@ -1,0 +1,130 @@
+"""Running the chain: fem_tcl SCRIPT OUTDIR [args] -> fem2mpm -> mpm, with one error type for the drivers.
+
+The FEM output contract (what a script run by `fem_tcl SCRIPT OUTDIR ...` must leave in OUTDIR):
+    model.json   `print -JSON -file OUTDIR/model.json` after the model is built
+    disp.out     `recorder Node -file OUTDIR/disp.out -time -nodeRange 1 N -dof 1 2 disp` (all nodes, tag order)
+    vel.out      the same with `vel`
+    stress.out   `recorder Element -file OUTDIR/stress.out -time -eleRange 1 M stress3D` (or `stress`)
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+FEM_OUTPUTS = ("model.json", "disp.out", "vel.out", "stress.out")
+BINARIES = ("fem_tcl", "fem2mpm", "mpm")
+
+
+class PipelineError(RuntimeError):
+    """A stage failed or broke the contract; str() is the one-line message. bad_input: the input is at fault
+    (a broken contract, or a program that exited with 2, its code for bad input)."""
+
+    def __init__(self, message, bad_input=False):
+        super().__init__(message)
+        self.bad_input = bad_input
+
+
+def find_bins(bin_dir, repo):
+    """{name: path} of fem_tcl, fem2mpm and mpm in bin_dir (default REPO/build/bin); raises when missing."""
+    d = bin_dir or os.path.join(repo, "build", "bin")
+    bins = {k: os.path.join(d, k) for k in BINARIES}
+    missing = [k for k, p in bins.items() if not os.access(p, os.X_OK)]
+    if missing:
+        raise PipelineError("%s not found in %s (build first: bash scripts/build.sh, or --bin DIR)" % (", ".join(missing), d))
+    return bins
+
+
+def run_cmd(cmd, cwd=None, logfile=None):
+    """Runs cmd (stdout and stderr to logfile), returns wall seconds; raises PipelineError with the log's
+    last line and the log's name as the message."""
+    t0 = time.perf_counter()
+    with open(logfile, "w") if logfile else open(os.devnull, "w") as f:
+        r = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+    wall = time.perf_counter() - t0
+    if r.returncode != 0:
+        tail = open(logfile).read()[-4000:] if logfile else ""
+        last = [ln for ln in tail.splitlines() if ln.strip()]
+        raise PipelineError("%s failed (exit %d): %s%s" % (os.path.basename(cmd[0]), r.returncode, last[-1] if last else "",
+                                                          " (log: %s)" % logfile if logfile else ""),
+                            bad_input=r.returncode == 2)
+    return wall
+
+
+def run_fem_script(bins, script, fem_dir, script_args=(), logfile=None):
+    """fem_tcl SCRIPT FEM_DIR ARGS...; then checks the contract (check_fem_outputs). Returns wall seconds."""
+    os.makedirs(fem_dir, exist_ok=True)
+    wall = run_cmd([bins["fem_tcl"], script, fem_dir] + list(script_args), logfile=logfile or os.path.join(fem_dir, "fem_tcl.log"))
+    check_fem_outputs(fem_dir, script)
+    return wall
+
+
+def check_fem_outputs(fem_dir, script="the FEM script"):
+    """Raises PipelineError naming the first contracted file the script did not write (or left empty)."""
+    for name in FEM_OUTPUTS:
+        p = os.path.join(fem_dir, name)
+        if not os.path.isfile(p) or os.path.getsize(p) == 0:
+            raise PipelineError("%s did not write %s in its output folder (the first argument, %s); the contract: "
+                                "model.json (print -JSON -file $out/model.json), disp.out and vel.out (recorder Node "
+                                "-time ... disp|vel), stress.out (recorder Element -time ... stress3D)"
+                                % (script, name, fem_dir), bad_input=True)
+
+
+def remove_outputs(folder, names):
+    """Removes what an earlier run left under these names in folder (files or folders), so that a failed run
+    never leaves an older, complete-looking output behind."""
+    for name in names:
+        p = os.path.join(folder, name)
+        if os.path.isdir(p):
+            shutil.rmtree(p)
+        elif os.path.exists(p):
+            os.remove(p)
+
+
+def run_fem2mpm(bins, fem_dir, out, t_transfer, options=(), logfile=None):
+    """fem2mpm on FEM_DIR's contracted files at time t_transfer into OUT (its own options appended).
+    Returns wall seconds; the log goes to OUT/fem2mpm.log."""
+    cmd = [bins["fem2mpm"], "--model", os.path.join(fem_dir, "model.json"), "--disp", os.path.join(fem_dir, "disp.out"),
+           "--vel", os.path.join(fem_dir, "vel.out"), "--stress", os.path.join(fem_dir, "stress.out"),
+           "--time", "%.10g" % t_transfer, "--out", out] + list(options)
+    parent = os.path.dirname(os.path.abspath(out))
+    os.makedirs(parent, exist_ok=True)
+    tmp_log = logfile or os.path.join(parent, os.path.basename(out) + "_fem2mpm.log")
+    wall = run_cmd(cmd, logfile=tmp_log)
+    if not logfile:
+        os.replace(tmp_log, os.path.join(out, "fem2mpm.log"))
+    return wall
+
+
+def edit_deck(deck_path, edit):
+    """Loads mpm.json, calls edit(deck) and writes it back (write-then-rename)."""
+    with open(deck_path) as f:
+        deck = json.load(f)
+    edit(deck)
+    tmp = deck_path + ".tmp"
+    with open(tmp, "w") as f:
+        json.dump(deck, f, indent=2)
+    os.replace(tmp, deck_path)
+    return deck
+
+
+def run_mpm(bins, work_dir, threads=1, deck="mpm.json"):
+    """mpm -f WORK_DIR/ -i DECK --threads N; returns wall seconds (log in WORK_DIR/mpm.log)."""
+    return run_cmd([bins["mpm"], "-f", work_dir.rstrip("/") + "/", "-i", deck, "--threads", str(threads)],
+                   logfile=os.path.join(work_dir, "mpm.log"))
+
+
+def results_dir(work_dir, deck="mpm.json"):
+    """WORK_DIR/<post_processing.path>/<uuid> of a deck."""
+    with open(os.path.join(work_dir, deck)) as f:
+        d = json.load(f)
+    uuid = d["analysis"].get("resume", {}).get("uuid") if d["analysis"].get("resume", {}).get("resume") else None
+    uuid = uuid or d["analysis"].get("uuid") or os.path.splitext(deck)[0]
+    return os.path.join(work_dir, d.get("post_processing", {}).get("path", "results/"), uuid)
+
+
+def die(prog, message, code=2):
+    """One line on stderr, exit code (2: bad input)."""
+    print("%s: error: %s" % (prog, message), file=sys.stderr)
+    sys.exit(code)

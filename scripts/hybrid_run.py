@@ -1,0 +1,350 @@
+#!/usr/bin/python3
+"""One command for your own model: FEM (fem_tcl) to the transfer time, fem2mpm, MPM (mpm) for the runout.
+
+    scripts/hybrid_run.py MODEL.tcl --transfer T [--duration D] [--out DIR] [driver options]
+                          [fem2mpm options...] [-- script arguments...]
+
+MODEL.tcl is run as `fem_tcl MODEL.tcl DIR/fem [script arguments...]`. The contract: the script takes its
+output folder as its FIRST argument and writes there
+    model.json   print -JSON -file [file join $out model.json]        (after the model is built)
+    disp.out     recorder Node -file [file join $out disp.out] -time -nodeRange 1 $nNodes -dof 1 2 disp
+    vel.out      recorder Node -file [file join $out vel.out]  -time -nodeRange 1 $nNodes -dof 1 2 vel
+    stress.out   recorder Element -file [file join $out stress.out] -time -eleRange 1 $nEle stress3D
+with a row at the transfer time T (e.g. `-dT` a divisor of T, or land a step on T). Then
+`fem2mpm ... --time T --duration D` writes the particles and the MPM deck into DIR/mpm, `mpm` runs it,
+and DIR receives what an engineer looks at:
+    series.csv           per MPM output (and the transfer state first): time (s, total: T + MPM time),
+                         runout (m: the largest horizontal travel of a particle since T), front_x (m: x of
+                         the moving mass farthest along the direction of travel; moving: travelled more than
+                         --moved since T), height (m: 99.5th percentile of particle y), moved_mass_fraction,
+                         potential_energy, kinetic_energy, kinetic_energy_x, kinetic_energy_y (J/m), max_speed
+    fem_mesh_T.png       the FEM mesh at T, deformed (true scale), coloured by |displacement|
+    particles_T.png      the particles at T and
+    particles_end.png    at the end, coloured by |displacement| since the start of the FEM run
+    runout.png, energy.png   runout and front; potential-energy loss and kinetic energy against time
+    summary.md           one page: the run, the transfer, the result, the figures
+    fem/, mpm/           the FEM output and the MPM working folder (deck, results/<uuid>/particles*.h5)
+
+Options that are not the driver's own (below) go to fem2mpm unchanged (bridge/README.md: --units kN,
+--ppd, --cell-size, --extent, --left-wall, --right-wall, --base, --base-friction, --base-y, --material-type,
+--phi, --cohesion, --scheme, --cfl, ...); --model, --disp, --vel, --stress, --time, --row and --out are
+set by the driver. Everything after `--` goes to the script. Errors: one line on stderr; exit 2 for bad
+input (a missing model, an option without its value, a script that does not write the contracted files,
+a transfer time the FEM did not record), 1 when a stage fails otherwise.
+
+Example (scripts/examples/slope_on_foundation.tcl):
+    scripts/hybrid_run.py scripts/examples/slope_on_foundation.tcl --transfer 0.5 --duration 4 \\
+        --out results/slope --units kN --extent -2 62 -1 30 --base-y 0 --left-wall roller --right-wall roller
+"""
+import argparse
+import json
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from geoflow import metrics, pipeline, plots  # noqa: E402
+
+PROG = "hybrid_run.py"
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# the driver's own options: name -> takes a value
+DRIVER_OPTIONS = {"--transfer": True, "--duration": True, "--out": True, "--bin": True, "--threads": True,
+                  "--output-every": True, "--moved": True, "--help": False, "-h": False}
+# what the driver writes into DIR (removed first, so a failed run never leaves an older one behind)
+OUTPUTS = ("fem", "mpm", "series.csv", "summary.md", "fem_mesh_T.png", "particles_T.png", "particles_end.png",
+           "runout.png", "energy.png")
+SET_BY_DRIVER = ("--model", "--disp", "--vel", "--stress", "--time", "--row", "--out")
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """argparse with one-line errors (exit 2)."""
+
+    def error(self, message):
+        pipeline.die(PROG, message)
+
+
+def driver_parser():
+    ap = OneLineParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 usage="%(prog)s MODEL.tcl --transfer T [--duration D] [--out DIR] [options] "
+                                       "[fem2mpm options] [-- script arguments]")
+    ap.add_argument("model", help="the FEM script (takes its output folder as its first argument)")
+    ap.add_argument("--transfer", type=float, required=True, help="transfer time T, s (a time in the FEM recorders)")
+    ap.add_argument("--duration", type=float, default=5.0, help="MPM time after the transfer, s (default 5)")
+    ap.add_argument("--out", default=None, help="output folder (default results/hybrid_<model name>)")
+    ap.add_argument("--bin", default=None, help="folder with fem_tcl, fem2mpm, mpm (default build/bin)")
+    ap.add_argument("--threads", type=int, default=1, help="mpm threads (default 1)")
+    ap.add_argument("--output-every", type=float, default=None,
+                    help="MPM particle output interval, s (default duration / 40; fem2mpm's --output-steps wins)")
+    ap.add_argument("--moved", type=float, default=0.1,
+                    help="travel since T above which a particle counts as moving (front_x, moved_mass_fraction), m")
+    return ap
+
+
+def split_arguments(argv):
+    """(driver words, fem2mpm words, script words): `--` ends the options; the driver's own options (and
+    their values) and MODEL (the first word that is not an option or a value) go to the driver."""
+    script = []
+    if "--" in argv:
+        k = argv.index("--")
+        argv, script = argv[:k], argv[k + 1:]
+    driver, forward, model_seen = [], [], False
+    i = 0
+    while i < len(argv):
+        w = argv[i]
+        name = w.split("=", 1)[0]
+        if name in DRIVER_OPTIONS:
+            driver.append(w)
+            if DRIVER_OPTIONS[name] and "=" not in w:
+                if i + 1 >= len(argv) or argv[i + 1].startswith("--"):
+                    pipeline.die(PROG, "option %s needs a value" % w)
+                driver.append(argv[i + 1])
+                i += 1
+        elif not w.startswith("-") and not model_seen and (not forward or not forward[-1].startswith("-")):
+            driver.append(w)
+            model_seen = True
+        else:
+            if name in SET_BY_DRIVER:
+                pipeline.die(PROG, "option %s is set by the driver (the FEM output of the script, --transfer, --out)" % name)
+            forward.append(w)
+        i += 1
+    return driver, forward, script
+
+
+def option_given(words, name):
+    return any(w == name or w.startswith(name + "=") for w in words)
+
+
+# ---- metrics of the runout ---------------------------------------------------------------------------
+
+def runout_series(results, t_transfer, moved):
+    """Per particle file (step 0 = the transfer state): the metrics of series.csv (see the module help),
+    and the particles at T and at the end for the figures."""
+    steps = metrics.particle_steps(results)
+    if not steps:
+        raise pipeline.PipelineError("mpm wrote no particle files in %s" % results)
+    ser = metrics.read_series(results)
+    row_of_step = {int(s): k for k, s in enumerate(ser["step"])}
+    first = metrics.read_particles(steps[min(steps)])
+    order = np.argsort(first["id"])
+    ids0 = first["id"][order]
+    x0, y0 = first["coord_x"][order], first["coord_y"][order]
+    u0 = np.stack([first["displacement_x"][order], first["displacement_y"][order]], axis=1)
+    mass0 = first["mass"][order]
+    rows, states = [], {}
+    last_step = max(steps)
+    for step in sorted(steps):
+        p = metrics.read_particles(steps[step])
+        o = np.argsort(p["id"])
+        if not np.array_equal(p["id"][o], ids0):
+            raise pipeline.PipelineError("particle ids of %s differ from the transfer file" % steps[step])
+        x, y = p["coord_x"][o], p["coord_y"][o]
+        vx, vy = p["velocity_x"][o], p["velocity_y"][o]
+        dx, dy = x - x0, y - y0
+        travel = np.hypot(dx, dy)
+        mov = travel > moved
+        e = metrics.state_metrics(x, y, vx, vy, mass0)
+        if step == min(steps) or step not in row_of_step:
+            t = t_transfer if step == min(steps) else float("nan")
+            max_speed = float(np.sqrt(np.max(vx ** 2 + vy ** 2)))
+        else:
+            k = row_of_step[step]
+            t = t_transfer + ser["time"][k]
+            max_speed = ser["max_speed"][k]
+        rows.append({"time": t, "runout": float(np.max(np.abs(dx))), "dx_sum": float(np.sum(mass0[mov] * dx[mov])),
+                     "mov": mov, "x": x, "height": e["H"], "moved_mass_fraction": float(mass0[mov].sum() / mass0.sum()),
+                     "potential_energy": e["PE"], "kinetic_energy": e["KEx"] + e["KEy"], "kinetic_energy_x": e["KEx"],
+                     "kinetic_energy_y": e["KEy"], "max_speed": max_speed})
+        if step in (min(steps), last_step):
+            states["T" if step == min(steps) else "end"] = {"x": x, "y": y, "u": u0 + np.stack([dx, dy], axis=1),
+                                                            "volume": p["volume"][o]}
+    # the direction of travel: that of the moving mass at the end
+    direction = 1.0 if rows[-1]["dx_sum"] >= 0.0 else -1.0
+    for r in rows:
+        r["front_x"] = float(direction * np.max(direction * r["x"][r["mov"]])) if np.any(r["mov"]) else float("nan")
+        for k in ("dx_sum", "mov", "x"):
+            del r[k]
+    return rows, states, direction
+
+
+SERIES_COLUMNS = ("time", "runout", "front_x", "height", "moved_mass_fraction", "potential_energy", "kinetic_energy",
+                  "kinetic_energy_x", "kinetic_energy_y", "max_speed")
+
+
+def write_series(path, rows):
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(",".join(SERIES_COLUMNS) + "\n")
+        for r in rows:
+            f.write(",".join("%.9g" % r[c] for c in SERIES_COLUMNS) + "\n")
+    os.replace(tmp, path)
+
+
+# ---- figures and summary -----------------------------------------------------------------------------
+
+def figures(out, fem_dir, t_transfer, rows, states, spacing):
+    plt = plots.pyplot()
+    paths = {}
+    xy, elems = metrics.load_fem_model(fem_dir)
+    u = metrics.fem_displacements_at(fem_dir, t_transfer)
+    umax_end = max(float(np.linalg.norm(states["end"]["u"], axis=1).max()), 1e-12)
+    if u is not None:
+        fig, ax = plt.subplots(figsize=(7, 3.6))
+        pc = plots.plot_fem_mesh(ax, xy, elems, u)
+        fig.colorbar(pc, ax=ax, label="|displacement| (m)", shrink=0.8)
+        ax.set_title("FEM at the transfer, t = %g s (deformed, true scale; grey: undeformed)" % t_transfer, fontsize=9)
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+        paths["fem"] = plots.save(fig, os.path.join(out, "fem_mesh_T.png"))
+    for key, title, name in (("T", "particles at the transfer, t = %g s" % t_transfer, "particles_T.png"),
+                             ("end", "particles at the end, t = %g s" % rows[-1]["time"], "particles_end.png")):
+        s = states[key]
+        fig, ax = plt.subplots(figsize=(7, 3.6))
+        sc = plots.plot_particles(ax, s["x"], s["y"], np.linalg.norm(s["u"], axis=1), spacing, 0.0, umax_end)
+        fig.colorbar(sc, ax=ax, label="|displacement| since the FEM start (m)", shrink=0.8)
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+        paths[key] = plots.save(fig, os.path.join(out, name))
+    t = np.array([r["time"] for r in rows])
+    fig, axs = plt.subplots(1, 2, figsize=(9, 3.2))
+    axs[0].plot(t, [r["runout"] for r in rows], "-", color="tab:blue", label="runout: largest horizontal travel")
+    axs[0].set_ylabel("runout since the transfer (m)")
+    axs[1].plot(t, [r["front_x"] for r in rows], "-", color="tab:orange", label="front of the moving mass")
+    axs[1].set_ylabel("front x (m)")
+    for ax in axs:
+        ax.set_xlabel("t (s)")
+        ax.axvline(t_transfer, ls=":", color="0.5", lw=0.8)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    paths["runout"] = plots.save(fig, os.path.join(out, "runout.png"))
+    fig, ax = plt.subplots(figsize=(5.5, 3.2))
+    pe0 = rows[0]["potential_energy"]
+    ax.plot(t, [(pe0 - r["potential_energy"]) / 1e3 for r in rows], "-", color="tab:green", label="potential energy released")
+    ax.plot(t, [r["kinetic_energy"] / 1e3 for r in rows], "-", color="tab:red", label="kinetic energy")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("energy (kJ per m of thickness)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    paths["energy"] = plots.save(fig, os.path.join(out, "energy.png"))
+    return paths
+
+
+def write_summary(out, args, command, forward, script_args, walls, rows, direction, report, deck, n_nodes, n_elems,
+                  fem_end, paths):
+    end = rows[-1]
+    lines = ["# hybrid_run: %s" % os.path.basename(args.model), "",
+             "`%s`" % " ".join(command), "",
+             "| stage | what | wall (s) |", "|---|---|---|",
+             "| FEM | `fem_tcl %s` (%s): %d nodes, %d elements, recorded to t = %g s | %.1f |"
+             % (os.path.basename(args.model), " ".join(script_args) or "no script arguments", n_nodes, n_elems, fem_end,
+                walls["fem"]),
+             "| transfer | `fem2mpm --time %g %s`: %s particles | %.1f |"
+             % (args.transfer, " ".join(forward), report.get("particles", "?"), walls["fem2mpm"]),
+             "| MPM | %g s (%d steps of %.3g s, %s) | %.1f |"
+             % (args.duration, deck["analysis"]["nsteps"], deck["analysis"]["dt"], deck["analysis"]["mpm_scheme"].upper(),
+                walls["mpm"]), ""]
+    lines += ["## Result at t = %g s" % end["time"], "",
+              "| | |", "|---|---|",
+              "| runout (largest horizontal travel since the transfer) | %.3g m |" % end["runout"],
+              "| front of the moving mass (travel > %g m), moving %s | x = %.4g m |"
+              % (args.moved, "right (+x)" if direction > 0 else "left (-x)", end["front_x"]),
+              "| mass moving | %.1f %% |" % (100 * end["moved_mass_fraction"]),
+              "| height (99.5th percentile of y) at T -> end | %.4g m -> %.4g m |" % (rows[0]["height"], end["height"]),
+              "| potential energy released | %.4g kJ/m |" % ((rows[0]["potential_energy"] - end["potential_energy"]) / 1e3),
+              "| kinetic energy at T -> end (largest) | %.4g -> %.4g kJ/m (%.4g) |"
+              % (rows[0]["kinetic_energy"] / 1e3, end["kinetic_energy"] / 1e3, max(r["kinetic_energy"] for r in rows) / 1e3),
+              "| largest speed at the end | %.3g m/s |" % end["max_speed"], ""]
+    if end["max_speed"] > 0.05:
+        lines += ["The mass is still moving at the end (largest speed %.3g m/s): run longer (--duration) for the "
+                  "final runout." % end["max_speed"], ""]
+    lines += ["Series: `series.csv`; transfer report: `mpm/report.json`; particles: `mpm/%s`." %
+              os.path.relpath(pipeline.results_dir(os.path.join(out, "mpm")), os.path.join(out, "mpm")), ""]
+    for key in ("fem", "T", "end", "runout", "energy"):
+        if key in paths:
+            lines.append("![%s](%s)" % (key, os.path.basename(paths[key])))
+    tmp = os.path.join(out, "summary.md.tmp")
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(tmp, os.path.join(out, "summary.md"))
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    driver_words, forward, script_args = split_arguments(argv)
+    ap = driver_parser()
+    args = ap.parse_args(driver_words)
+    if not os.path.isfile(args.model):
+        pipeline.die(PROG, "%s: no such FEM script" % args.model)
+    if not (args.duration > 0):
+        pipeline.die(PROG, "--duration: expected a time > 0 s, got %g" % args.duration)
+    if not (args.transfer >= 0):
+        pipeline.die(PROG, "--transfer: expected a time >= 0 s, got %g" % args.transfer)
+    for name, value in (("--moved", args.moved), ("--output-every", args.output_every), ("--threads", args.threads)):
+        if value is not None and not (value > 0):
+            pipeline.die(PROG, "%s: expected a value > 0, got %g" % (name, value))
+    if option_given(forward, "--duration") or option_given(forward, "--nsteps"):
+        pipeline.die(PROG, "give the MPM time with the driver's --duration")
+    name = os.path.splitext(os.path.basename(args.model))[0]
+    out = os.path.abspath(args.out or os.path.join(REPO, "results", "hybrid_" + name))
+    fem_dir, mpm_dir = os.path.join(out, "fem"), os.path.join(out, "mpm")
+    try:
+        bins = pipeline.find_bins(args.bin, REPO)
+    except pipeline.PipelineError as e:
+        pipeline.die(PROG, str(e))
+    os.makedirs(out, exist_ok=True)
+    pipeline.remove_outputs(out, OUTPUTS)
+    command = [PROG] + argv
+    walls = {}
+    stage = "FEM"
+    try:
+        print("%s: FEM: fem_tcl %s %s %s" % (PROG, args.model, fem_dir, " ".join(script_args)), flush=True)
+        walls["fem"] = pipeline.run_fem_script(bins, os.path.abspath(args.model), fem_dir, script_args)
+        fem_end = metrics.fem_last_time(fem_dir)
+        if args.transfer > fem_end + 1e-9:
+            pipeline.die(PROG, "--transfer %g: the FEM run recorded only to t = %g s (%s)"
+                         % (args.transfer, fem_end, os.path.join(fem_dir, "disp.out")))
+        stage = "fem2mpm"
+        print("%s: transfer at t = %g s: fem2mpm %s" % (PROG, args.transfer, " ".join(forward)), flush=True)
+        walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, args.transfer,
+                                                list(forward) + ["--duration", repr(args.duration)])
+        if not option_given(forward, "--output-steps"):
+            n_out = max(1, int(round(args.duration / (args.output_every or args.duration / 40.0))))
+
+            def set_output(deck):
+                # n_out outputs, the last one at exactly T + D: nsteps - 1 a multiple of output_steps, and dt
+                # (never larger than fem2mpm's) such that nsteps dt = D (file s holds the state at (s + 1) dt)
+                a = deck["analysis"]
+                every = int(np.ceil((a["nsteps"] - 1) / n_out))
+                a["nsteps"] = every * n_out + 1
+                a["dt"] = args.duration / a["nsteps"]
+                deck["post_processing"]["output_steps"] = every
+            deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), set_output)
+        else:
+            deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), lambda d: None)
+        stage = "MPM"
+        print("%s: MPM: %g s, %d steps" % (PROG, args.duration, deck["analysis"]["nsteps"]), flush=True)
+        walls["mpm"] = pipeline.run_mpm(bins, mpm_dir, args.threads)
+        stage = "post-processing"
+        results = pipeline.results_dir(mpm_dir)
+        rows, states, direction = runout_series(results, args.transfer, args.moved)
+        write_series(os.path.join(out, "series.csv"), rows)
+        with open(os.path.join(mpm_dir, "report.json")) as f:
+            report = json.load(f)
+        xy, elems = metrics.load_fem_model(fem_dir)
+        report.setdefault("particles", len(states["T"]["x"]))
+        spacing = float(np.sqrt(np.median(states["T"]["volume"])))
+        paths = figures(out, fem_dir, args.transfer, rows, states, spacing)
+        write_summary(out, args, command, forward, script_args, walls, rows, direction, report, deck, len(xy),
+                      len(elems), fem_end, paths)
+    except pipeline.PipelineError as e:
+        print("%s: error: %s: %s" % (PROG, stage, e), file=sys.stderr)
+        return 2 if e.bad_input else 1
+    print("%s: done: runout %.3g m, front x = %.4g m, %.0f %% of the mass moving at t = %g s; %s"
+          % (PROG, rows[-1]["runout"], rows[-1]["front_x"], 100 * rows[-1]["moved_mass_fraction"], rows[-1]["time"],
+             os.path.join(out, "summary.md")), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

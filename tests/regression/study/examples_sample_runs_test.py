@@ -1,0 +1,124 @@
+#!/usr/bin/python3
+"""Runs the "Sample run" line of every example in scripts/examples/ (MFEM's habit: examples carry their own
+sample run and the suite runs it, so they never rot), in its small version (the values on the header's "Test
+run" line replace the sample run's: a shorter MPM run, fewer particles, a coarser mesh through the script's
+arguments), each into a scratch folder, and checks what the driver (scripts/hybrid_run.py) promises: exit 0;
+series.csv, summary.md and the five figures written; the series starting at the transfer time and ending at
+transfer + duration.
+
+Physics checks, from the examples' headers (each example is built to fail):
+- the slope moves: the largest horizontal travel since the transfer is above 0.3 m and more than 2 % of the
+  mass is moving (measured, small versions: slope_on_foundation 1.4 m and 28 %, embankment_two_layers 1.07 m
+  and 13 %; each ~25 s of wall time on the loaded 2-core machine, ~3 s of CPU);
+- no particle crosses a roller wall given in the sample run (--left-wall/--right-wall roller at the
+  --extent's xmin/xmax), within half a cell.
+"""
+import argparse
+import csv
+import glob
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+
+def header_command(path, title):
+    """The words on the line after '# <title>' in the example's header (None if there is none)."""
+    lines = open(path).read().splitlines()
+    for k, line in enumerate(lines):
+        if line.lstrip("# ").lower().startswith(title) and k + 1 < len(lines):
+            return shlex.split(lines[k + 1].lstrip("#").strip())
+    return None
+
+
+def small_version(words, overrides):
+    """The sample run with the values of the header's 'Test run' options put in (the words after its `--`
+    become the script's arguments): a smaller, faster run of the same command."""
+    words = list(words)
+    if "--" in overrides:
+        k = overrides.index("--")
+        overrides, script_args = overrides[:k], overrides[k + 1:]
+    else:
+        script_args = []
+    for i in range(0, len(overrides), 2):
+        k = words.index(overrides[i])   # a ValueError here: the test-run line names an option the sample run lacks
+        words[k + 1] = overrides[i + 1]
+    return words + (["--"] + script_args if script_args else [])
+
+
+def option(words, name, count=1):
+    k = words.index(name)
+    return words[k + 1:k + 1 + count]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--repo", required=True)
+    args = ap.parse_args()
+    examples = sorted(glob.glob(os.path.join(args.repo, "scripts", "examples", "*.tcl")))
+    failures = []
+
+    def check(what, ok, detail=""):
+        print("%s %s %s" % ("ok  " if ok else "FAIL", what, detail))
+        if not ok:
+            failures.append(what)
+
+    runs = 0
+    for ex in examples:
+        words = header_command(ex, "sample run")
+        if words is None:
+            continue   # a sourced helper (no sample run)
+        words = small_version(words, header_command(ex, "test run") or [])
+        runs += 1
+        name = os.path.basename(ex)
+        out = tempfile.mkdtemp(prefix="example_%s_" % os.path.splitext(name)[0])
+        try:
+            check("%s: the sample run calls scripts/hybrid_run.py" % name, words[0] == "scripts/hybrid_run.py", words[0])
+            k = words.index("--out")
+            words[k + 1] = out
+            k = words.index("--") if "--" in words else len(words)
+            cmd = [sys.executable, os.path.join(args.repo, words[0])] + words[1:k] + ["--bin", args.bin] + words[k:]
+            r = subprocess.run(cmd, cwd=args.repo, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            print(r.stdout[-3000:])
+            check("%s: exit 0" % name, r.returncode == 0, "(%d)" % r.returncode)
+            if r.returncode != 0:
+                continue
+            for f in ("series.csv", "summary.md", "fem_mesh_T.png", "particles_T.png", "particles_end.png",
+                      "runout.png", "energy.png"):
+                check("%s: %s written" % (name, f), os.path.getsize(os.path.join(out, f)) > 0)
+            with open(os.path.join(out, "series.csv")) as f:
+                rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+            t_transfer = float(option(words, "--transfer")[0])
+            duration = float(option(words, "--duration")[0])
+            check("%s: series starts at the transfer" % name, abs(rows[0]["time"] - t_transfer) < 1e-9, str(rows[0]["time"]))
+            check("%s: series ends at transfer + duration" % name, abs(rows[-1]["time"] - t_transfer - duration) < 0.01,
+                  str(rows[-1]["time"]))
+            check("%s: runout > 0.3 m" % name, rows[-1]["runout"] > 0.3, "%.3g m" % rows[-1]["runout"])
+            check("%s: some mass moving" % name, rows[-1]["moved_mass_fraction"] > 0.02, "%.3g" % rows[-1]["moved_mass_fraction"])
+            x0, x1 = (float(v) for v in option(words, "--extent", 2))
+            cell = float(option(words, "--cell-size")[0])
+            last = sorted(glob.glob(os.path.join(out, "mpm", "results", "*", "particles*.h5")))[-1]
+            with h5py.File(last, "r") as h:
+                x = np.asarray(h["table"]["coord_x"], dtype=float)
+            if option(words, "--left-wall")[0] == "roller":
+                check("%s: no particle left of the left wall" % name, x.min() >= x0 - 0.5 * cell, "min x %.4g" % x.min())
+            if option(words, "--right-wall")[0] == "roller":
+                check("%s: no particle right of the right wall" % name, x.max() <= x1 + 0.5 * cell, "max x %.4g" % x.max())
+        finally:
+            shutil.rmtree(out, ignore_errors=True)
+    check("at least two examples with a sample run", runs >= 2, str(runs))
+    if failures:
+        print("FAILED: " + ", ".join(failures))
+        return 1
+    print("all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,71 @@
+#!/usr/bin/python3
+"""scripts/hybrid_run.py on bad input: one line on stderr naming what was expected, exit 2, and no summary
+written. Cases: a missing model; an option without its value; an option the driver sets itself; a script
+that does not write the contracted files (model.json, disp.out, vel.out, stress.out) in its output folder;
+a transfer time after the last recorded row. Each case is a few fem_tcl commands (well under a second)."""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+NO_RECORDERS = """model basic -ndm 2 -ndf 2
+node 1 0 0
+node 2 1 0
+node 3 1 1
+node 4 0 1
+nDMaterial ElasticIsotropic 1 1000.0 0.25 2.0
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+print -JSON -file [file join [lindex $argv 0] model.json]
+"""
+RECORDS_TO_ZERO = NO_RECORDERS + """fix 1 1 1
+fix 2 1 1
+set out [lindex $argv 0]
+recorder Node -file [file join $out disp.out] -time -nodeRange 1 4 -dof 1 2 disp
+recorder Node -file [file join $out vel.out] -time -nodeRange 1 4 -dof 1 2 vel
+recorder Element -file [file join $out stress.out] -time -eleRange 1 1 stress3D
+record
+"""
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--bin", required=True)
+    ap.add_argument("--repo", required=True)
+    args = ap.parse_args()
+    driver = os.path.join(args.repo, "scripts", "hybrid_run.py")
+    tmp = tempfile.mkdtemp(prefix="hybrid_run_errors_")
+    failures = []
+
+    def case(what, argv, expect):
+        out = os.path.join(tmp, "out_" + what.replace(" ", "_"))
+        r = subprocess.run([sys.executable, driver] + argv + ["--bin", args.bin, "--out", out], stdout=subprocess.PIPE,
+                           stderr=subprocess.PIPE, text=True)
+        err = [ln for ln in r.stderr.splitlines() if ln.strip()]
+        ok = r.returncode == 2 and len(err) == 1 and expect in err[0] and not os.path.exists(os.path.join(out, "summary.md"))
+        print("%s %s: exit %d, stderr %r" % ("ok  " if ok else "FAIL", what, r.returncode, r.stderr.strip()))
+        if not ok:
+            failures.append(what)
+
+    bad = os.path.join(tmp, "no_recorders.tcl")
+    with open(bad, "w") as f:
+        f.write(NO_RECORDERS)
+    good = os.path.join(tmp, "records_to_zero.tcl")
+    with open(good, "w") as f:
+        f.write(RECORDS_TO_ZERO)
+    case("missing model", [os.path.join(tmp, "nothing.tcl"), "--transfer", "0"], "no such FEM script")
+    case("option without value", [good, "--transfer"], "--transfer needs a value")
+    case("option set by the driver", [good, "--transfer", "0", "--time", "1"], "--time is set by the driver")
+    case("contract not met", [bad, "--transfer", "0"], "did not write disp.out")
+    case("transfer after the last row", [good, "--transfer", "1.5"], "recorded only to t = 0 s")
+    shutil.rmtree(tmp, ignore_errors=True)
+    if failures:
+        print("FAILED: " + ", ".join(failures))
+        return 1
+    print("all checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
