@@ -28,8 +28,8 @@ std::vector<double> parse_list(common::CommandArgs& args, std::string_view what)
   std::vector<double> out;
   std::string token;
   while (in >> token) {
-    const auto v = common::CommandArgs::parse_number(token);
-    if (!v) args.fail("expected a list of numbers for " + std::string(what) + ", got '" + token + "'");
+    const auto v = common::CommandArgs::parse_finite_number(token);
+    if (!v) args.fail("expected a list of finite numbers for " + std::string(what) + ", got '" + token + "'");
     out.push_back(*v);
   }
   return out;
@@ -41,8 +41,8 @@ std::vector<double> read_file_values(common::CommandArgs& args, const std::strin
   std::vector<double> out;
   std::string token;
   while (in >> token) {
-    const auto v = common::CommandArgs::parse_number(token);
-    if (!v) args.fail("file '" + path + "': expected numbers, got '" + token + "'");
+    const auto v = common::CommandArgs::parse_finite_number(token);
+    if (!v) args.fail("file '" + path + "': expected finite numbers, got '" + token + "'");
     out.push_back(*v);
   }
   return out;
