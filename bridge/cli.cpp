@@ -21,6 +21,8 @@
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
+#include "common/printable_text.hpp"
+#include "mpm/io/deck_rules.hpp"
 
 namespace bridge {
 namespace {
@@ -154,8 +156,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (o.right_wall) deck.right = parse_wall(*o.right_wall, "--right-wall");
   if (o.base) deck.base = parse_base(*o.base);
   if (!o.extent.empty()) deck.extent = std::array<double, 4>{o.extent[0], o.extent[1], o.extent[2], o.extent[3]};
-  if (deck.uuid.empty() || deck.uuid.find('/') != std::string::npos)
-    throw common::InputError("--uuid", "expected a plain name (no '/'), got '" + deck.uuid + "'");
+  if (const auto problem = mpm::io::run_name_problem(deck.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
 
   using Clock = std::chrono::steady_clock;
   auto lap = [last = Clock::now()]() mutable {
@@ -266,6 +267,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     throw;
   }
   if (!o.quiet) print_report(out, assembled, report, d, o, boundaries, outdir, timing);
+  if (!out.flush()) throw common::OutputError("standard output: writing the report failed (the deck in " + outdir.string() + " is complete)");
   return 0;
 }
 
@@ -336,6 +338,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC) instead of FLIP")->group("MPM deck");
   app.add_option("--damping", o.deck.damping, "Cundall damping factor")->capture_default_str()->group("MPM deck");
   app.add_flag("--quiet", o.quiet, "print nothing on success (the report is still written to report.json)");
+  app.footer("Exit status: 0 done; 2 bad input (one line naming the option, file, line or key; nothing written); "
+             "1 an output could not be written (disk full, permissions); an output target that exists and is not a regular "
+             "file is refused (2). "
+             "SIGTERM/SIGINT remove the temporary *.tmp.<pid> files.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -343,16 +349,16 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
       out << app.help();
       return 0;
     }
-    err << "fem2mpm: error: " << e.what() << " (see fem2mpm --help)\n";
+    err << "fem2mpm: error: " << common::printable(e.what()) << " (see fem2mpm --help)\n";
     return 2;
   }
   try {
     return run(o, out, err);
   } catch (const common::InputError& e) {
-    err << "fem2mpm: error: " << e.what() << "\n";
+    err << "fem2mpm: error: " << common::printable(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    err << "fem2mpm: error: " << e.what() << "\n";
+    err << "fem2mpm: error: " << common::printable(e.what()) << "\n";
     return 1;
   }
 }

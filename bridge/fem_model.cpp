@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/json_file.hpp"
 
 namespace bridge {
 namespace {
@@ -86,7 +87,8 @@ class FlatEntry {
       const char* b = tok.data();
       if (!tok.empty() && *b == '+') ++b;
       const auto res = std::from_chars(b, tok.data() + tok.size(), v);
-      if (res.ec != std::errc() || res.ptr != tok.data() + tok.size()) return false;
+      // from_chars also reads "nan" and "inf", which are not JSON: the JSON parser reports them
+      if (res.ec != std::errc() || res.ptr != tok.data() + tok.size() || !std::isfinite(v)) return false;
       i = end;
       return true;
     };
@@ -384,6 +386,11 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
         continue;
       }
       failure = at + ": cannot parse this entry as JSON";
+      try {
+        common::parse_json_text(entry, at);  // the parser's own reason, with the key
+      } catch (const common::InputError& e) {
+        failure = e.what();
+      }
       return std::nullopt;  // not the one-entry-per-line layout after all
     }
     if (section == Section::Nodes) add_node(model, j, at);
@@ -413,6 +420,7 @@ FemModel parse_fem_model(const std::string& text, const std::filesystem::path& f
   const json root = json::parse(text, nullptr, false);
   if (root.is_discarded()) {
     if (!line_failure.empty()) throw common::InputError(line_failure);
+    common::parse_json_text(text, file.string());  // throws the parser's reason, naming the key
     throw common::InputError(file.string(), "not valid JSON, and not in print -JSON's one-entry-per-line layout");
   }
   const auto sam = root.find("StructuralAnalysisModel");

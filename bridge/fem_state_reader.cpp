@@ -10,9 +10,14 @@
 #include "bridge/recorder_file.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
+#include "common/printable_text.hpp"
+#include "mpm/io/deck_rules.hpp"
 
 namespace bridge {
 namespace {
+
+/// Most tags a --nodes / --elements list may name (far above any 2D model a recorder file can hold).
+constexpr double kMaxTags = 1e7;
 
 /// A number quoted in a note or warning (9 significant digits).
 std::string fmt(double v) { return common::number_text(v, 9); }
@@ -109,22 +114,31 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
     if (!v) throw common::InputError(src, std::string("no ") + what + "; give " + option + why);
     return *v;
   };
-  m.youngs_modulus = need(E, "Young's modulus", "--E") * stress_factor;
-  m.poisson_ratio = need(nu, "Poisson's ratio", "--nu");
-  if (rho) m.density = *rho * density_factor;
-  if (!(m.youngs_modulus > 0)) throw common::InputError(src, "Young's modulus must be > 0");
-  if (!(m.poisson_ratio > -1 && m.poisson_ratio < 0.5)) throw common::InputError(src, "Poisson's ratio must be in (-1, 0.5)");
+  // The MPM deck's rules (mpm/io/deck_rules.hpp), on the value as given (so the message quotes it) and
+  // after the unit factor.
+  auto rule = [&](double given, double factor, const common::NumberRange& range, const char* what, const char* option) {
+    for (double v : {given, given * factor})
+      if (const auto problem = common::number_problem(v, range); !problem.empty())
+        throw common::InputError(src, std::string(what) + ": " + problem + " (" + option + ")");
+    return given * factor;
+  };
+  m.youngs_modulus = rule(need(E, "Young's modulus", "--E"), stress_factor, mpm::io::kYoungsModulusRange, "Young's modulus", "--E");
+  m.poisson_ratio = rule(need(nu, "Poisson's ratio", "--nu"), 1, mpm::io::kPoissonRatioRange, "Poisson's ratio", "--nu");
+  // rho 0 is OpenSees' "no density" (the elements' masspervolume is used then).
+  if (rho) m.density = rule(*rho, density_factor, common::NumberRange::non_negative(), "density", "--density");
   if (type == "elastic") {
     m.type = MpmMaterial::Type::LinearElastic2D;
     return m;
   }
   m.type = MpmMaterial::Type::MohrCoulomb2D;
-  const double phi_deg = need(phi, "friction angle", "--phi");
-  if (!(phi_deg >= 0 && phi_deg < 90)) throw common::InputError(src, "friction angle must be in [0, 90) degrees");
+  const double phi_deg = rule(need(phi, "friction angle", "--phi"), 1, mpm::io::kFrictionAngleRange, "friction angle", "--phi");
+  const double psi_deg = rule(psi.value_or(0.0), 1, mpm::io::kFrictionAngleRange, "dilation angle", "--psi");
+  if (const auto problem = mpm::io::dilation_problem(psi_deg, phi_deg); !problem.empty())
+    throw common::InputError(src, "dilation angle: " + problem + " (--psi)");
   m.friction = phi_deg * std::numbers::pi / 180;
-  m.dilation = psi.value_or(0.0) * std::numbers::pi / 180;
-  m.cohesion = need(c, "cohesion", "--cohesion") * stress_factor;
-  if (m.cohesion < 0) throw common::InputError(src, "cohesion must be >= 0");
+  m.dilation = psi_deg * std::numbers::pi / 180;
+  m.cohesion = rule(need(c, "cohesion", "--cohesion"), stress_factor, mpm::io::kCohesionRange, "cohesion", "--cohesion");
+  if (tension) rule(*tension, stress_factor, mpm::io::kTensionCutoffRange, "tension cutoff", "--tension");
   // No tension cutoff in the FEM material: CB-Geo's cutoff at the Mohr-Coulomb apex c cot(phi).
   if (tension) m.tension_cutoff = *tension * stress_factor;
   else m.tension_cutoff = m.friction > 0 ? m.cohesion / std::tan(m.friction) : 1e30;
@@ -190,10 +204,17 @@ std::vector<long> parse_tag_list(const std::string& text, const std::string& opt
         const std::string rest = word.substr(dash + 1);
         const long b = std::stol(rest, &used);
         if (used != rest.size() || b < a) throw std::invalid_argument(word);
+        // Counted before expanding: "1-999999999" must be an error, not gigabytes of tags.
+        if (static_cast<double>(b) - static_cast<double>(a) + 1 + static_cast<double>(out.size()) > kMaxTags)
+          throw common::InputError(option, "'" + common::printable(word) + "' names " +
+                                               fmt(static_cast<double>(b) - static_cast<double>(a) + 1) +
+                                               " tags; at most " + fmt(kMaxTags) + " in all");
         for (long t = a; t <= b; ++t) out.push_back(t);
       }
+    } catch (const common::InputError&) {
+      throw;
     } catch (const std::exception&) {
-      throw common::InputError(option, "expected tags or ranges like '1-35,40', got '" + word + "'");
+      throw common::InputError(option, "expected tags or ranges like '1-35,40', got '" + common::printable(word) + "'");
     }
   }
   if (out.empty()) throw common::InputError(option, "empty tag list");
@@ -208,6 +229,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   // --- recorder files and the row at the transfer time
   // Row widths are checked against the layouts first (a file without its time column is caught
   // there), then the rows at the transfer time are picked.
+  if (options.time) common::checked_number(*options.time, common::NumberRange::any(), "--time");
   const RecorderFile disp(options.disp);
   const RecorderFile stress(options.stress);
 
@@ -357,7 +379,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
 
   // --- gravity and unit sanity
   if (options.gravity) {
-    st.gravity = *options.gravity;
+    st.gravity = common::checked_number(*options.gravity, mpm::io::kFiniteRange, "--gravity");
   } else if (!gravity_samples.empty()) {
     double sum = 0;
     for (double g : gravity_samples) sum += g;

@@ -8,11 +8,17 @@
 #include <numbers>
 #include <sstream>
 
+#include "common/finite_number.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
+#include "mpm/io/deck_rules.hpp"
 
 namespace bridge {
 namespace {
+
+/// Most background cells a deck may have (mesh.txt of ED2Q16G cells is ~100 bytes per cell; mpm's
+/// generated grids stop at 1e8 too).
+constexpr double kMaxGridCells = 1e8;
 
 /// A number quoted in an error message (9 significant digits, as the other bridge messages).
 std::string num(double v) { return common::number_text(v, 9); }
@@ -74,7 +80,7 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
   double area = 0;
   for (const auto& e : state.elements) area += std::abs(quad_area(state.reference_nodes(e)));
   g.h = options.cell_size ? *options.cell_size : std::sqrt(area / static_cast<double>(std::max<std::size_t>(1, state.elements.size())));
-  if (!(g.h > 0)) throw common::InputError("--cell-size", "expected a cell size > 0");
+  if (!(g.h > 0) || !std::isfinite(g.h)) throw common::InputError("--cell-size", "expected a cell size > 0 (finite), got " + num(g.h));
   // Bounding box of the current nodes used by the elements.
   double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
   for (const auto& e : state.elements)
@@ -83,13 +89,27 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
       xmin = std::min(xmin, p.x()); xmax = std::max(xmax, p.x());
       ymin = std::min(ymin, p.y()); ymax = std::max(ymax, p.y());
     }
+  // Cell counts as doubles first: a huge extent or a tiny cell must be an error, not an int overflow
+  // or std::bad_alloc while the mesh text is built.
+  const char* culprit = options.extent ? (options.cell_size ? "--extent / --cell-size" : "--extent") : "--cell-size";
+  auto set_cell_counts = [&](double width_m, double height_m) {
+    const double nx = std::ceil(width_m / g.h - 1e-9), ny = std::ceil(height_m / g.h - 1e-9);
+    if (!(nx * ny <= kMaxGridCells) || !(nx + 3 <= std::numeric_limits<int>::max() && ny + 3 <= std::numeric_limits<int>::max()))
+      throw common::InputError(culprit, "the grid would have " + num(nx) + " x " + num(ny) + " cells of " + num(g.h) +
+                                            " m (at most " + num(kMaxGridCells) + " cells)");
+    if (const auto problem = common::size_problem(nx * ny, g.gimp ? 160 : 48, "grid cells"); !problem.empty())
+      throw common::InputError(culprit, problem);
+    g.nx = static_cast<int>(nx);
+    g.ny = static_cast<int>(ny);
+  };
   if (options.extent) {
     const auto& ext = *options.extent;
+    for (double v : ext)
+      if (!std::isfinite(v)) throw common::InputError("--extent", "expected finite numbers, got " + num(v));
     if (!(ext[1] > ext[0] && ext[3] > ext[2])) throw common::InputError("--extent", "expected xmin < xmax and ymin < ymax");
     g.x0 = ext[0];
     g.y0 = ext[2];
-    g.nx = static_cast<int>(std::ceil((ext[1] - ext[0]) / g.h - 1e-9));
-    g.ny = static_cast<int>(std::ceil((ext[3] - ext[2]) / g.h - 1e-9));
+    set_cell_counts(ext[1] - ext[0], ext[3] - ext[2]);
   } else {
     // Walls and base on grid lines; the runout area (3 model widths) only beyond a free side, 0.25 heights
     // above the top. Without FEM supports: the legacy layout, a wall at the model's left side.
@@ -101,8 +121,7 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
       g.h = (right - left) / std::max(1.0, std::round((right - left) / g.h));
     const double bottom = anchors.base ? *anchors.base - g.h : ymin;  // one row below the base (GIMP support)
     const double top = ymax + 0.25 * height;
-    g.nx = static_cast<int>(std::ceil((right - left) / g.h - 1e-9));
-    g.ny = static_cast<int>(std::ceil((top - bottom) / g.h - 1e-9));
+    set_cell_counts(right - left, top - bottom);
     g.x0 = anchors.left || !anchors.right ? left : right - g.nx * g.h;
     g.y0 = bottom;
     const double grid_right = g.x0 + g.nx * g.h;
@@ -126,24 +145,30 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   const GridSpec g = choose_grid(state, particles, options, &d.warnings);
   d.grid = g;
   if (options.dt) {
-    if (!(*options.dt > 0)) throw common::InputError("--dt", "expected a time step > 0");
-    d.dt = *options.dt;
+    d.dt = common::checked_number(*options.dt, mpm::io::kTimeStepRange, "--dt");
   } else {
     double cmax = 0;
     for (const auto& m : state.materials) cmax = std::max(cmax, p_wave_speed(m));
-    if (!(options.cfl > 0)) throw common::InputError("--cfl", "expected a Courant number > 0");
+    common::checked_number(options.cfl, common::NumberRange::open_closed(0, 1).named("a Courant number"), "--cfl");
     d.dt = options.cfl * g.h / cmax;
+    if (!(d.dt > 0) || !std::isfinite(d.dt))
+      throw common::InputError("--dt", "the default time step cfl h / c_p is " + num(d.dt) + "; give --dt");
   }
   if (options.nsteps) {
     if (*options.nsteps < 1) throw common::InputError("--nsteps", "expected at least 1 step");
     d.nsteps = *options.nsteps;
   } else {
-    if (!(options.duration > 0)) throw common::InputError("--duration", "expected a duration > 0");
-    d.nsteps = static_cast<long long>(std::ceil(options.duration / d.dt - 1e-9)) + 1;
+    common::checked_number(options.duration, common::NumberRange::positive(), "--duration");
+    const double steps = std::ceil(options.duration / d.dt - 1e-9) + 1;
+    if (!(steps <= 1e15))
+      throw common::InputError("--duration", num(options.duration) + " s at dt " + num(d.dt) + " s is " + num(steps) +
+                                                 " steps (at most 1e15; give a larger --dt or a shorter --duration)");
+    d.nsteps = static_cast<long long>(steps);
   }
   // Default: every 0.5 s, and at least the last step.
   d.output_steps = options.output_steps ? *options.output_steps
-                                        : std::max<long long>(1, std::min<long long>(std::llround(0.5 / d.dt), d.nsteps - 1));
+                                        : std::max<long long>(1, static_cast<long long>(std::min(
+                                                                     std::round(0.5 / d.dt), static_cast<double>(d.nsteps - 1))));
   if (d.output_steps < 1) throw common::InputError("--output-steps", "expected at least 1");
   if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
   if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
@@ -156,8 +181,10 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   if (options.base_y) d.base_y = *options.base_y;
   else if (support_base && *support_base >= g.y0 && *support_base < grid_top) d.base_y = *support_base;
   else d.base_y = g.y0;
-  if (options.base == Base::Friction && !(options.base_friction >= 0))
-    throw common::InputError("--base-friction", "expected a friction coefficient >= 0");
+  if (options.base == Base::Friction)
+    common::checked_number(options.base_friction, mpm::io::kFrictionCoefficientRange, "--base-friction");
+  common::checked_number(options.damping, mpm::io::kDampingFactorRange, "--damping");
+  if (const auto problem = mpm::io::run_name_problem(options.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
   return d;
 }

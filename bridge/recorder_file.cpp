@@ -8,6 +8,7 @@
 
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
+#include "common/printable_text.hpp"
 
 namespace bridge {
 namespace {
@@ -75,15 +76,19 @@ RecorderFile::RecorderFile(std::filesystem::path file, bool has_time_column)
     row.line = line;
     row.offset = pos;
     row.length = eol - pos;
+    row.terminated = terminated;
     // Count and check tokens; parse the first one as the time.
     int digits = 6;
     for_each_token(data, pos, eol, [&](const char* begin, const char* end) {
       double v = 0;
       if (!parse_token(begin, end, v))
         throw common::InputError(path_.string() + ":" + std::to_string(line),
-                                 "expected a number, got '" + std::string(begin, end) + "'" +
+                                 "expected a number, got '" + common::printable(std::string(begin, end).substr(0, 40)) + "'" +
                                      (terminated ? "" : " (the file looks truncated)"));
       if (row.width == 0) {
+        if (has_time_ && !std::isfinite(v))
+          throw common::InputError(path_.string() + ":" + std::to_string(line),
+                                   "the time column is '" + std::string(begin, end) + "' (expected a finite time)");
         row.time = v;
         digits = significant_digits(begin, end);
       }
@@ -151,12 +156,22 @@ std::size_t RecorderFile::find_row(long n) const {
 
 std::vector<double> RecorderFile::values(std::size_t index) const {
   const Row& row = rows_.at(index);
+  // A recorder ends every row with a newline: a last row without one was cut while being written (a
+  // number in it may be cut short and still parse).
+  if (!row.terminated)
+    throw common::InputError(where(index), "the last row has no final newline: the file was cut while it was being "
+                                           "written (choose an earlier row with --time or --row)");
   std::vector<double> out;
   out.reserve(row.width);
   bool skip = has_time_;
+  std::size_t column = 0;
   for_each_token(text_.data(), row.offset, row.offset + row.length, [&](const char* begin, const char* end) {
     double v = 0;
     parse_token(begin, end, v);  // checked while indexing
+    ++column;
+    if (!std::isfinite(v))
+      throw common::InputError(where(index), "value " + std::to_string(column) + " is '" + std::string(begin, end) +
+                                                 "' (the FEM state in this row is not finite: the analysis diverged?)");
     if (!skip) out.push_back(v);
     skip = false;
   });

@@ -19,6 +19,7 @@ class RecorderFile {
     std::size_t length = 0;    ///< bytes up to (not including) the newline
     std::size_t width = 0;     ///< number of values including the time column
     double time = 0;           ///< the first value when the file has a time column
+    bool terminated = true;    ///< ends with a newline (a recorder always writes one: else the row was cut)
   };
 
   /// Reads and indexes `file`. Throws common::InputError "<file>:<line>: ..." when the file is

@@ -1,8 +1,11 @@
 #include "common/command_args.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <climits>
 #include <cstdlib>
+
+#include "common/printable_text.hpp"
 
 namespace common {
 
@@ -31,6 +34,12 @@ std::optional<double> CommandArgs::parse_number(std::string_view text) {
   return value;
 }
 
+std::optional<double> CommandArgs::parse_finite_number(std::string_view text) {
+  const auto value = parse_number(text);
+  if (value && !std::isfinite(*value)) return std::nullopt;
+  return value;
+}
+
 std::optional<int> CommandArgs::parse_integer(std::string_view text) {
   if (text.empty()) return std::nullopt;
   const std::string s(text);
@@ -45,7 +54,7 @@ std::optional<int> CommandArgs::parse_integer(std::string_view text) {
 int CommandArgs::integer(std::string_view what) {
   if (empty()) fail("missing " + std::string(what) + " (an integer)");
   const auto value = parse_integer(words_[next_]);
-  if (!value) fail("expected " + std::string(what) + " (an integer), got '" + words_[next_] + "'");
+  if (!value) fail("expected " + std::string(what) + " (an integer), got '" + printable(words_[next_]) + "'");
   ++next_;
   return *value;
 }
@@ -53,7 +62,8 @@ int CommandArgs::integer(std::string_view what) {
 double CommandArgs::number(std::string_view what) {
   if (empty()) fail("missing " + std::string(what) + " (a number)");
   const auto value = parse_number(words_[next_]);
-  if (!value) fail("expected " + std::string(what) + " (a number), got '" + words_[next_] + "'");
+  if (!value) fail("expected " + std::string(what) + " (a number), got '" + printable(words_[next_]) + "'");
+  if (!std::isfinite(*value)) fail("expected " + std::string(what) + " (a finite number), got '" + printable(words_[next_]) + "'");
   ++next_;
   return *value;
 }
@@ -69,6 +79,7 @@ bool CommandArgs::flag(std::string_view flag) {
 std::optional<double> CommandArgs::optional_number() {
   if (empty()) return std::nullopt;
   auto value = parse_number(words_[next_]);
+  if (value && !std::isfinite(*value)) fail("expected a finite number, got '" + printable(words_[next_]) + "'");
   if (value) ++next_;
   return value;
 }
@@ -81,7 +92,7 @@ std::optional<int> CommandArgs::optional_integer() {
 }
 
 void CommandArgs::expect_end() const {
-  if (!empty()) fail("unexpected argument '" + words_[next_] + "'");
+  if (!empty()) fail("unexpected argument '" + printable(words_[next_]) + "'");
 }
 
 }  // namespace common

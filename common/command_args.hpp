@@ -27,11 +27,12 @@ class CommandArgs {
   std::string word(std::string_view what);
   /// An integer in Tcl's syntax (decimal, optional sign); "1.5" is an error, as Tcl_GetInt.
   int integer(std::string_view what);
-  /// A double in Tcl's syntax (strtod, whole word).
+  /// A finite double in Tcl's syntax (strtod, whole word); "nan", "inf" and overflowing words are errors.
   double number(std::string_view what);
   /// Consumes the next word if it equals `flag` (e.g. "-tension"); returns whether it did.
   bool flag(std::string_view flag);
-  /// Consumes and returns the next word if it parses as a number; otherwise leaves it.
+  /// Consumes and returns the next word if it parses as a number; otherwise leaves it. A word that
+  /// parses but is not finite ("nan", "-inf") is an error.
   std::optional<double> optional_number();
   /// Consumes and returns the next word if it parses as an integer; otherwise leaves it.
   std::optional<int> optional_integer();
@@ -43,7 +44,10 @@ class CommandArgs {
   const std::string& command() const { return command_; }
   const std::string& usage() const { return usage_; }
 
+  /// The syntax check only (a number word, finite or not; overflow is not a number).
   static std::optional<double> parse_number(std::string_view text);
+  /// parse_number, and finite.
+  static std::optional<double> parse_finite_number(std::string_view text);
   static std::optional<int> parse_integer(std::string_view text);
 
  private:

@@ -14,6 +14,12 @@ class InputError : public std::runtime_error {
   InputError(const std::string& where, const std::string& what);
 };
 
+/// An output that could not be written (disk full, no permission, a failed close): exit status 1.
+class OutputError : public std::runtime_error {
+ public:
+  explicit OutputError(const std::string& message) : std::runtime_error(message) {}
+};
+
 /// A numerical failure the user should see (singular system, NaN in the state, non-convergence).
 class NumericalError : public std::runtime_error {
  public:

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/input_error.hpp"
+#include "common/printable_text.hpp"
 #include "mpm/core/simulation.hpp"
 #include "mpm/io/deck_reader.hpp"
 #include "mpm/io/progress.hpp"
@@ -37,7 +38,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
     std::string saved = "no step completed, nothing written";
     if (last >= deck.first_step) saved = "last good state (step " + std::to_string(last) + ") written to " +
                                          results.write_state(last, sim.time(), sim.snapshot()).string();
-    std::fprintf(stderr, "mpm: %s; %s\n", e.what(), saved.c_str());
+    std::fprintf(stderr, "mpm: %s; %s\n", common::printable(e.what()).c_str(), saved.c_str());
     return 3;
   }
   progress.finish();
@@ -56,6 +57,9 @@ int main(int argc, char** argv) {
   app.add_option("-i,--input_file", input_file, "input JSON file in the working folder")->capture_default_str();
   app.add_option("-p,--threads,--parallel", threads, "threads (0: OpenMP's default)")->check(CLI::NonNegativeNumber);
   app.set_version_flag("-v,--version", std::string("mpm (geoflow) ") + GEOFLOW_VERSION);
+  app.footer("Exit status: 0 done; 2 bad input (one line naming the file and key; nothing written); 1 an output "
+             "could not be written (disk full, permissions); 3 numerical failure (the last good state is written, "
+             "resumable). SIGTERM/SIGINT remove the temporary *.tmp.<pid> files of outputs being written.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -65,10 +69,13 @@ int main(int argc, char** argv) {
   try {
     return run(working_dir, input_file, threads);
   } catch (const common::InputError& e) {
-    std::fprintf(stderr, "mpm: %s\n", e.what());
+    std::fprintf(stderr, "mpm: %s\n", common::printable(e.what()).c_str());
     return 2;
+  } catch (const common::NumericalError& e) {
+    std::fprintf(stderr, "mpm: %s\n", common::printable(e.what()).c_str());
+    return 3;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "mpm: %s\n", e.what());
+    std::fprintf(stderr, "mpm: %s\n", common::printable(e.what()).c_str());
     return 1;
   }
 }

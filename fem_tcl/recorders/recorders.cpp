@@ -1,6 +1,10 @@
 #include "fem_tcl/recorders/recorders.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <iostream>
+
+#include "common/printable_text.hpp"
 
 namespace fem::recorders {
 
@@ -15,6 +19,14 @@ TextRecorder::~TextRecorder() {
   if (out_.is_open()) out_.close();
 }
 
+void TextRecorder::check_stream(const char* what) {
+  if (out_.fail() && !failed_) {
+    failed_ = true;  // reported once; the file is incomplete from this row on
+    throw common::OutputError("recorder -file " + options_.path + ": " + what + " failed (" + std::strerror(errno) +
+                              "); the recorder file is incomplete");
+  }
+}
+
 void TextRecorder::record(double time) {
   // OpenSees Recorder -dT rule with relative tolerance 1e-5 (NodeRecorder::record).
   if (options_.delta_t != 0.0) {
@@ -26,18 +38,26 @@ void TextRecorder::record(double time) {
   const std::size_t before = row_.size();
   collect(row_);
   if (row_.size() == before) return;  // nothing to write (e.g. a Node recorder without -dof)
+  if (failed_) return;
   if (options_.close_on_write) {
     out_.open(options_.path, std::ios::out | std::ios::app);
     out_.precision(options_.precision);
+    check_stream("reopening the file");
   }
   out_ << row_[0];
   for (std::size_t i = 1; i < row_.size(); ++i) out_ << ' ' << row_[i];
   out_ << '\n';
-  if (options_.close_on_write) out_.close();
+  check_stream("writing a row");
+  if (options_.close_on_write) {
+    out_.close();
+    check_stream("closing the file");
+  }
 }
 
 void TextRecorder::flush() {
-  if (out_.is_open()) out_.flush();
+  if (failed_ || !out_.is_open()) return;
+  out_.flush();
+  check_stream("writing");
 }
 
 NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<domain::Node*> nodes,
@@ -106,7 +126,7 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     else if (args.flag("-time")) opt.time_column = true;
     else if (args.flag("-dT")) {
       opt.delta_t = args.number("-dT value");
-      if (opt.delta_t < 0.0) args.fail("expected -dT >= 0");
+      if (!(opt.delta_t >= 0.0)) args.fail("expected -dT >= 0");
     } else if (args.flag("-precision")) {
       opt.precision = args.integer("-precision value");
       if (opt.precision < 1 || opt.precision > 17) args.fail("expected 1 <= -precision <= 17");
@@ -143,6 +163,11 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
   if (!have_file) args.fail("missing -file name (only file output is supported)");
   if (is_mesh) return std::make_unique<MeshQualityRecorder>(opt, domain);
   if (response.empty()) args.fail("missing response (e.g. disp, reaction, stress)");
+  // With no element selected the response words are never checked: "-time abc 1 stresses" would
+  // record an empty file.
+  if (!is_node && tags.empty())
+    args.fail("no elements selected (give -ele tags or -eleRange a b with existing elements), so the response '" +
+              common::printable(response[0]) + "' cannot be checked and nothing would be recorded");
   if (is_node) {
     NodeResponse r{};
     const std::string& w = response[0];

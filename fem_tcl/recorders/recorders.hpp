@@ -33,8 +33,12 @@ class TextRecorder : public domain::Recorder {
   virtual void collect(std::vector<double>& row) = 0;
 
  private:
+  /// Throws common::OutputError naming the file the first time the stream has failed.
+  void check_stream(const char* what);
+
   RecorderOptions options_;
   std::ofstream out_;
+  bool failed_ = false;
   double next_time_ = 0.0;
   std::vector<double> row_;
 };

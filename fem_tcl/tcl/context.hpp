@@ -43,6 +43,10 @@ struct Context {
   bool analysis_dirty = true;
   domain::LoadPattern* current_pattern = nullptr;  ///< inside `pattern Plain ... {body}`
   int failed_analyses = 0;  ///< `analyze` calls that returned < 0 (reported again at exit)
+  /// The last command error and the exit status it maps to (2 input, 1 output, 3 numerical), so that
+  /// an uncaught error exits with the status of its kind.
+  std::string last_error;
+  int last_error_status = 2;
 
   /// Evaluates `script` in the interpreter; throws TclScriptError when it fails.
   void eval(const std::string& script);

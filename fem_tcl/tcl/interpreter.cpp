@@ -2,11 +2,13 @@
 
 #include <tcl.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <iterator>
 #include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/printable_text.hpp"
 #include "fem_tcl/tcl/commands.hpp"
 
 namespace fem::tcl {
@@ -53,16 +55,31 @@ int dispatch(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   } catch (const TclScriptError&) {
     return TCL_ERROR;  // a nested script failed; its message and errorInfo are in place
   } catch (const std::exception& e) {
-    // every command error carries the command's usage line
+    // every command error carries the command's usage line (output failures are not usage errors)
+    const bool output = dynamic_cast<const common::OutputError*>(&e) != nullptr;
     std::string message = e.what();
-    if (message.find("usage:") == std::string::npos) message += "; usage: " + std::string(entry.usage);
+    if (!output && message.find("usage:") == std::string::npos) message += "; usage: " + std::string(entry.usage);
+    binding->context->last_error = message;
+    binding->context->last_error_status = output ? 1 : dynamic_cast<const common::NumericalError*>(&e) ? 3 : 2;
     Tcl_SetObjResult(interp, Tcl_NewStringObj(message.c_str(), static_cast<int>(message.size())));
     return TCL_ERROR;
   }
 }
 
+/// Flushes every recorder; false (and the message on stderr) when one could not be written.
+bool flush_recorders_reporting(Context& ctx) {
+  try {
+    ctx.domain.flush_recorders();
+    return true;
+  } catch (const std::exception& e) {
+    std::cerr << common::printable(e.what()) << "\n";
+    return false;
+  }
+}
+
 void flush_on_exit(ClientData data) {
-  static_cast<Context*>(static_cast<void*>(data))->domain.flush_recorders();
+  // Tcl's `exit` runs this before exiting: a recorder that cannot be written turns the exit status into 1.
+  if (!flush_recorders_reporting(*static_cast<Context*>(static_cast<void*>(data)))) std::_Exit(1);
 }
 
 // OpenSees sends `puts` without a channel to stderr (quirk 10).
@@ -94,7 +111,7 @@ Interpreter::Interpreter() : context_(std::make_unique<Context>()) {
 
 Interpreter::~Interpreter() {
   Tcl_DeleteExitHandler(flush_on_exit, static_cast<ClientData>(static_cast<void*>(context_.get())));
-  context_->domain.flush_recorders();
+  flush_recorders_reporting(*context_);
   Tcl_DeleteInterp(context_->interp);
 }
 
@@ -171,7 +188,9 @@ int run_main(int argc, char** argv) {
                  "  registered nDMaterials; static and transient analyses; Node/Element recorders).\n"
                  "  With no script, the commands are read from standard input.\n"
                  "  The script's arguments are in $argv ($argc of them); $argv0 is the script's path.\n"
-                 "  An uncaught error prints 'file:line: message' on stderr and exits with status 1.\n";
+                 "  An uncaught error prints 'file:line: message' on stderr (one line, non-printable bytes\n"
+                 "  escaped) and exits with status 2 (bad input: a script or command error), 1 (an output\n"
+                 "  file could not be written, e.g. a recorder on a full disk) or 3 (numerical failure).\n";
     return 0;
   }
   Interpreter interpreter;
@@ -186,16 +205,22 @@ int run_main(int argc, char** argv) {
     ok = interpreter.eval_file(args[0], message);
   }
   std::cout.flush();
-  interpreter.context().domain.flush_recorders();
+  const bool flushed = flush_recorders_reporting(interpreter.context());
   if (interpreter.context().failed_analyses > 0) {
     std::cerr << "WARNING fem_tcl: " << interpreter.context().failed_analyses
               << " analyze call(s) failed (returned < 0); the state after each failure is the last converged one\n";
   }
   if (!ok) {
-    std::cerr << message << "\n";
+    std::cerr << common::printable(message) << "\n";
+    const Context& ctx = interpreter.context();
+    const bool from_command = !ctx.last_error.empty() && message.find(ctx.last_error) != std::string::npos;
+    return from_command ? ctx.last_error_status : 2;
+  }
+  if (!std::cout) {
+    std::cerr << "fem_tcl: writing to standard output failed\n";
     return 1;
   }
-  return 0;
+  return flushed ? 0 : 1;
 }
 
 }  // namespace fem::tcl

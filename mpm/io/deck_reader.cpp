@@ -10,8 +10,10 @@
 #include <set>
 
 #include "common/input_error.hpp"
+#include "common/json_file.hpp"
 #include "common/number_text.hpp"
 #include "mpm/io/ascii_files.hpp"
+#include "mpm/io/deck_rules.hpp"
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
 #include "mpm/io/output_keys.hpp"
@@ -30,28 +32,7 @@ namespace {
 /// A number quoted in an input error (10 significant digits).
 std::string num(double v) { return common::number_text(v, 10); }
 
-json parse_json_file(const fs::path& file, const std::string& shown) {
-  std::ifstream in(file);
-  if (!in) throw common::InputError(shown, "input file not found or not readable (looked for " + file.string() + ")");
-  // A key given twice in one object would silently keep the last value: an error instead.
-  std::vector<std::set<std::string>> keys;
-  const json::parser_callback_t no_duplicates = [&](int /*depth*/, json::parse_event_t event, json& parsed) {
-    if (event == json::parse_event_t::object_start) keys.emplace_back();
-    else if (event == json::parse_event_t::object_end) keys.pop_back();
-    else if (event == json::parse_event_t::key && !keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
-      throw common::InputError(shown, "key \"" + parsed.get<std::string>() + "\" appears twice in one object");
-    return true;
-  };
-  try {
-    return json::parse(in, no_duplicates, true, /*ignore_comments=*/false);
-  } catch (const json::parse_error& e) {
-    // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." -> keep the part after the tag.
-    std::string what = e.what();
-    const auto tag = what.find("] ");
-    if (tag != std::string::npos) what = what.substr(tag + 2);
-    throw common::InputError(shown, "invalid JSON (truncated file?): " + what);
-  }
-}
+json parse_json_file(const fs::path& file, const std::string& shown) { return common::parse_json_file(file, shown); }
 
 /// Entity sets file: {"node_sets": [{"id", "set"}], "particle_sets": [...], "cell_sets": [...]}.
 struct EntitySets {
@@ -104,39 +85,23 @@ MaterialSpec read_material(StrictObject& m) {
   if (type == "LinearElastic2D") spec.type = MaterialType::LinearElastic2D;
   else if (type == "MohrCoulomb2D") spec.type = MaterialType::MohrCoulomb2D;
   else m.fail("type", "unsupported material \"" + type + "\" (expected LinearElastic2D or MohrCoulomb2D)");
-  auto positive = [&](const char* key) {
-    const double v = m.number(key);
-    if (!(v > 0)) m.fail(key, "expected a number > 0, got " + num(v));
-    return v;
-  };
-  auto non_negative = [&](const char* key) {
-    const double v = m.number(key);
-    if (!(v >= 0)) m.fail(key, "expected a number >= 0, got " + num(v));
-    return v;
-  };
-  spec.density = positive("density");
-  spec.youngs_modulus = positive("youngs_modulus");
-  spec.poisson_ratio = m.number("poisson_ratio");
-  if (!(spec.poisson_ratio > -1 && spec.poisson_ratio < 0.5))
-    m.fail("poisson_ratio", "expected a number in (-1, 0.5), got " + num(spec.poisson_ratio));
+  spec.density = m.number_in("density", kDensityRange);
+  spec.youngs_modulus = m.number_in("youngs_modulus", kYoungsModulusRange);
+  spec.poisson_ratio = m.number_in("poisson_ratio", kPoissonRatioRange);
   if (spec.type == MaterialType::MohrCoulomb2D) {
     const double deg = std::numbers::pi / 180.0;
-    auto angle = [&](const char* key) {
-      const double v = m.number(key);
-      if (!(v >= 0 && v < 90)) m.fail(key, "expected an angle in degrees in [0, 90), got " + num(v));
-      return v * deg;
-    };
+    auto angle = [&](const char* key) { return m.number_in(key, kFrictionAngleRange) * deg; };
     spec.friction = angle("friction");
     spec.dilation = angle("dilation");
-    spec.cohesion = non_negative("cohesion");
+    spec.cohesion = m.number_in("cohesion", kCohesionRange);
     spec.residual_friction = angle("residual_friction");
     spec.residual_dilation = angle("residual_dilation");
-    spec.residual_cohesion = non_negative("residual_cohesion");
-    spec.peak_pdstrain = non_negative("peak_pdstrain");
-    spec.residual_pdstrain = non_negative("residual_pdstrain");
-    spec.tension_cutoff = non_negative("tension_cutoff");
+    spec.residual_cohesion = m.number_in("residual_cohesion", kCohesionRange);
+    spec.peak_pdstrain = m.number_in("peak_pdstrain", kPdstrainRange);
+    spec.residual_pdstrain = m.number_in("residual_pdstrain", kPdstrainRange);
+    spec.tension_cutoff = m.number_in("tension_cutoff", kTensionCutoffRange);
     spec.softening = m.boolean("softening");
-    if (spec.dilation > spec.friction) m.fail("dilation", "must not exceed friction");
+    if (const auto p = dilation_problem(spec.dilation / deg, spec.friction / deg); !p.empty()) m.fail("dilation", p);
     if (spec.softening && !(spec.residual_pdstrain > spec.peak_pdstrain))
       m.fail("residual_pdstrain", "must be > peak_pdstrain when softening is true");
     if (spec.friction == 0 && spec.cohesion == 0) m.fail("cohesion", "friction 0 and cohesion 0 give no strength");
@@ -197,9 +162,7 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
     StrictObject damping(*d, a.file(), a.path_of("damping"));
     const std::string dtype = damping.string("type");
     if (dtype != "Cundall") damping.fail("type", "unsupported damping \"" + dtype + "\" (expected Cundall)");
-    an.cundall_damping = damping.number("damping_factor");
-    if (!(an.cundall_damping >= 0 && an.cundall_damping < 1))
-      damping.fail("damping_factor", "expected a number in [0, 1), got " + num(an.cundall_damping));
+    an.cundall_damping = damping.number_in("damping_factor", kDampingFactorRange);
     damping.finish();
   }
   if (const json* r = a.optional("resume")) {
@@ -326,8 +289,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         const long long sign = c.integer("sign_n");
         if (sign != 1 && sign != -1) c.fail("sign_n", "expected -1 or 1, got " + std::to_string(sign));
         fc.sign_n = static_cast<int>(sign);
-        fc.friction = c.number("friction");
-        if (!(fc.friction >= 0)) c.fail("friction", "expected a number >= 0, got " + num(fc.friction));
+        fc.friction = c.number_in("friction", kFrictionCoefficientRange);
         deck.friction_constraints.push_back(std::move(fc));
       }
       c.finish();
@@ -663,8 +625,8 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   }
 
   if (deck.output.uuid.empty()) deck.output.uuid = uuid.empty() ? fs::path(input_file).stem().string() : uuid;
-  if (deck.output.uuid.find('/') != std::string::npos || deck.output.uuid == "." || deck.output.uuid == "..")
-    throw common::InputError(shown + ": analysis.uuid", "\"" + deck.output.uuid + "\" must be a plain folder name");
+  if (const auto problem = run_name_problem(deck.output.uuid); !problem.empty())
+    throw common::InputError(shown + (resume.resume ? ": analysis.resume.uuid" : ": analysis.uuid"), problem);
   root.finish();
   return deck;
 }

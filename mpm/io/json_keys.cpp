@@ -68,6 +68,11 @@ std::string as_string(const StrictObject& o, const std::string& key, const nlohm
 }  // namespace
 
 double StrictObject::number(const std::string& key) { return as_number(*this, key, required(key)); }
+double StrictObject::number_in(const std::string& key, const common::NumberRange& range) {
+  const double v = number(key);
+  if (const std::string problem = common::number_problem(v, range); !problem.empty()) fail(key, problem);
+  return v;
+}
 double StrictObject::number_or(const std::string& key, double fallback) {
   const auto* v = optional(key);
   return v ? as_number(*this, key, *v) : fallback;

@@ -4,6 +4,8 @@
 // key"). CB-Geo ignores unknown keys silently; a typo in a deck must never run a different model.
 #include <nlohmann/json.hpp>
 
+#include "common/finite_number.hpp"
+
 #include <set>
 #include <string>
 
@@ -22,6 +24,8 @@ class StrictObject {
   const nlohmann::json* optional(const std::string& key);
 
   double number(const std::string& key);
+  /// number(key), checked against `range` (finite always): "mpm.json: materials[0].density: expected a number > 0, got -1".
+  double number_in(const std::string& key, const common::NumberRange& range);
   double number_or(const std::string& key, double fallback);
   long long integer(const std::string& key);
   long long integer_or(const std::string& key, long long fallback);

@@ -6,9 +6,12 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <system_error>
 #include <stdexcept>
 
 #include "common/atomic_file.hpp"
+#include "common/finite_number.hpp"
 #include "common/input_error.hpp"
 
 namespace mpm::io {
@@ -73,6 +76,12 @@ class Handle {
   ~Handle() { if (id_ >= 0) close_(id_); }
   hid_t get() const { return id_; }
   bool valid() const { return id_ >= 0; }
+  /// Gives up ownership (the caller closes the handle).
+  hid_t release() {
+    const hid_t id = id_;
+    id_ = -1;
+    return id;
+  }
  private:
   hid_t id_;
   herr_t (*close_)(hid_t);
@@ -109,22 +118,30 @@ void write_particle_table(const std::filesystem::path& file, std::span<const Par
   const auto temporary = common::temporary_path_for(file);
   {
     Handle h5(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    if (!h5.valid()) throw std::runtime_error(file.string() + ": cannot create HDF5 file");
+    if (!h5.valid()) {
+      common::discard_temporary(temporary);
+      throw common::OutputError(file.string() + ": cannot create HDF5 file");
+    }
     const hsize_t chunk = records.empty() ? 1 : std::min<hsize_t>(records.size(), 10000);
     const herr_t status = H5TBmake_table("Table Title", h5.get(), "table", members.size(), records.size(),
                                          sizeof(ParticleRecord), names.data(), offsets.data(), types.data(),
                                          chunk, nullptr, 0, records.data());
     if (status < 0) {
-      std::filesystem::remove(temporary);
-      throw std::runtime_error(file.string() + ": writing the particle table failed");
+      common::discard_temporary(temporary);
+      throw common::OutputError(file.string() + ": writing the particle table failed (disk full?)");
     }
     if (add_datasets) {
       try {
         add_datasets(static_cast<std::int64_t>(h5.get()));
       } catch (...) {
-        std::filesystem::remove(temporary);
+        common::discard_temporary(temporary);
         throw;
       }
+    }
+    // Closing flushes the metadata: a failure here (a full disk) leaves an unusable file.
+    if (H5Fclose(h5.release()) < 0) {
+      common::discard_temporary(temporary);
+      throw common::OutputError(file.string() + ": closing the HDF5 file failed (disk full?)");
     }
   }
   common::commit_file(temporary, file);
@@ -145,6 +162,23 @@ std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& fil
     throw common::InputError(file.string(), "\"/table\" must be one-dimensional");
   hsize_t n = 0;
   H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+  // The declared row count is checked before allocating: against the bytes the file holds (rows are
+  // stored unfiltered by H5TB, CB-Geo and h5py's defaults) and against what this machine can hold.
+  {
+    const std::size_t row_bytes = H5Tget_size(ftype.get());
+    std::error_code ec;
+    const auto file_bytes = std::filesystem::file_size(file, ec);
+    Handle plist(H5Dget_create_plist(dset.get()), H5Pclose);
+    const bool filtered = plist.valid() && H5Pget_nfilters(plist.get()) > 0;
+    const double declared = static_cast<double>(n) * static_cast<double>(row_bytes);
+    if (!filtered && !ec && declared > static_cast<double>(file_bytes))
+      throw common::InputError(file.string(), "\"/table\" declares " + std::to_string(n) + " rows (" +
+                                                  std::to_string(row_bytes) + " bytes each) but the file has only " +
+                                                  std::to_string(file_bytes) + " bytes (truncated or corrupt file)");
+    if (const auto problem = common::size_problem(static_cast<double>(n), sizeof(ParticleRecord), "particle rows");
+        !problem.empty())
+      throw common::InputError(file.string(), "\"/table\": " + problem);
+  }
 
   // Memory type matched by member name; every schema member must be in the file.
   Handle mtype(H5Tcreate(H5T_COMPOUND, sizeof(ParticleRecord)), H5Tclose);
@@ -156,10 +190,21 @@ std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& fil
   std::vector<ParticleRecord> records(n);
   if (n > 0 && H5Dread(dset.get(), mtype.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, records.data()) < 0)
     throw common::InputError(file.string(), "reading \"/table\" failed (truncated or corrupt file?)");
+  const auto members = schema();
   for (const auto& r : records) {
     if (r.nstate_vars > kMaxStateVariables)
       throw common::InputError(file.string(), "particle " + std::to_string(r.id) + ": nstate_vars " +
                                                   std::to_string(r.nstate_vars) + " exceeds 20");
+    // A NaN or infinity would be carried into every later output: the file is not a usable state.
+    for (const auto& m : members) {
+      if (m.type != MemberType::Float64) continue;
+      double v = 0;
+      std::memcpy(&v, reinterpret_cast<const char*>(&r) + m.offset, sizeof v);
+      if (!std::isfinite(v))
+        throw common::InputError(file.string(), "particle " + std::to_string(r.id) + ": " + m.name + " is " +
+                                                    (std::isnan(v) ? "nan" : "infinite") +
+                                                    " (a particle file must hold finite values)");
+    }
   }
   return records;
 }

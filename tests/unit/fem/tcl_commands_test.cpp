@@ -1,7 +1,7 @@
 // Unit tests: the Tcl command layer. Bad input (wrong argument count, unknown command/option, missing or
 // duplicate tags, clockwise or collapsed elements, singular systems) gives a Tcl error whose message
 // names the command and tag and carries the usage line; fem_tcl itself reports uncaught errors as
-// "file:line: message" with exit status 1 after flushing the recorders.
+// "file:line: message" with exit status 2 (bad input) after flushing the recorders.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -143,7 +143,7 @@ if {$it < 1 || [llength $norms] != $it || [lindex $norms end] > 1e-9} { error "t
 )tcl"), "");
 }
 
-TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitOneAndFlushedRecorders) {
+TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitTwoAndFlushedRecorders) {
   test_support::ScratchDir dir("fem_tcl_uncaught");
   {
     std::ofstream script(dir.path() / "bad.tcl");
@@ -158,7 +158,7 @@ TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitOneAndFlushedRecorde
               "nodeDisp 99\n";
   }
   const int status = test_support::run_fem_tcl(GEOFLOW_BIN_DIR, dir.path(), "bad.tcl");
-  EXPECT_EQ(status, 1);
+  EXPECT_EQ(status, 2);
   const std::string err = test_support::read_text(dir.path() / "stderr.txt");
   EXPECT_NE(err.find("bad.tcl:21: nodeDisp 99: node 99 does not exist"), std::string::npos) << err;
   const auto rows = test_support::read_numeric_table(dir.path() / "d.out");
