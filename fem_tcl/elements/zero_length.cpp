@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <iostream>
+#include <utility>
 
 namespace fem::elements {
 
@@ -228,6 +229,24 @@ std::unique_ptr<domain::Element> parse_zero_length(common::CommandArgs& args, co
   std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats;
   for (int m : mat_tags) mats.push_back(ctx.uniaxial_material(args, m).copy());
   return std::make_unique<ZeroLength>(tag, ni, nj, std::move(mats), std::move(dirs), x_axis, do_rayleigh);
+}
+
+namespace {
+struct UniaxialTrialState final : domain::ElementState {
+  std::vector<std::pair<double, double>> strain_and_rate;
+};
+}  // namespace
+
+std::unique_ptr<domain::ElementState> ZeroLength::save_state() const {
+  auto state = std::make_unique<UniaxialTrialState>();
+  for (const auto& m : mats_) state->strain_and_rate.emplace_back(m->strain(), m->strain_rate());
+  return state;
+}
+
+void ZeroLength::restore_state(const domain::ElementState& saved) {
+  const auto& state = dynamic_cast<const UniaxialTrialState&>(saved);
+  for (std::size_t k = 0; k < mats_.size() && k < state.strain_and_rate.size(); ++k)
+    mats_[k]->set_trial_strain(state.strain_and_rate[k].first, state.strain_and_rate[k].second);
 }
 
 }  // namespace fem::elements

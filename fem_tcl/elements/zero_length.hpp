@@ -48,6 +48,10 @@ class ZeroLength final : public domain::Element {
   std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
   bool set_parameter(std::string_view, double) override { return false; }
   bool update_material_stage(int) override { return false; }
+  bool reduce_strength(double) override { return false; }  ///< springs and dashpots have no strength
+  /// The materials' trial strains and rates: Elastic and Viscous are path-independent, so these are their state.
+  std::unique_ptr<domain::ElementState> save_state() const override;
+  void restore_state(const domain::ElementState& state) override;
   int material_tag() const override { return -1; }  ///< no nDMaterial
   nlohmann::ordered_json to_json() const override;
 
