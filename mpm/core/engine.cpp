@@ -26,14 +26,6 @@ constexpr double kSmallMassFraction = 0.02;
 std::string num(double v) { return common::number_text(v, 10); }
 }  // namespace
 
-StressSmoothing parse_stress_smoothing(const std::string& name) {
-  if (name == "none" || name.empty()) return StressSmoothing::None;
-  if (name == "cell_volumetric") return StressSmoothing::CellVolumetric;
-  if (name == "nodal_strain") return StressSmoothing::NodalStrain;
-  throw common::InputError("analysis.stress_smoothing",
-                           "expected \"none\", \"cell_volumetric\" or \"nodal_strain\", got \"" + name + "\"");
-}
-
 void ParticleArrays::resize(std::size_t n) {
   id.resize(n);
   material.resize(n);
@@ -222,7 +214,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   force_.assign(2 * nodes_, 0.0);
   velocity_.assign(2 * nodes_, 0.0);
   updated_.assign(4 * nodes_, 0.0);
-  if (smoothing_ == StressSmoothing::NodalStrain) nodal_strain_.assign(3 * nodes_, 0.0);
+  if (nodal_projection(smoothing_).values > 0) nodal_remedy_.assign(3 * nodes_, 0.0);
   problems_.resize(max_chunks);
 
   order_.resize(n);
@@ -692,29 +684,30 @@ struct MixedMaterials {
 
 
 /// Stress update: strain increment from the nodal velocity at the particle (or the one g2p stored),
-/// the selected checkerboard remedy, then the material's stress update and the carried state (next
-/// buffer). The nodal_strain remedy needs every chunk's increments at the nodes first, hence its
-/// barriers.
+/// the selected checkerboard remedy (stress_remedy.hpp), then the material's stress update and the
+/// carried state (next buffer). A nodal remedy needs every chunk's values at the nodes first, hence
+/// its barriers.
 template <class Shape>
 void Engine::update_stress(StrainFrom from) {
   wait_for_previous_phase();
   const bool strain_ready = from == StrainFrom::G2p;
-  if (smoothing_ == StressSmoothing::NodalStrain) {
+  if (nodal_projection(smoothing_).values > 0) {
     for_each_chunk([&](std::size_t c) {
       if (!strain_ready) compute_strain_increments<Shape>(c);
-      scatter_strain_increments<Shape>(c);
+      scatter_remedy_values<Shape>(c);
     });
 #pragma omp barrier
-    for_each_row([&](int j) { nodal_strain_row(j); });
+    for_each_row([&](int j) { nodal_remedy_row(j); });
 #pragma omp barrier
     for_each_chunk([&](std::size_t c) {
-      gather_strain_increments<Shape>(c);
+      gather_remedy_values<Shape>(c);
       update_material_state(c);
     });
   } else {
+    const bool cell_remedy = is_cell_remedy(smoothing_);
     for_each_chunk([&](std::size_t c) {
       if (!strain_ready) compute_strain_increments<Shape>(c);
-      if (smoothing_ == StressSmoothing::CellVolumetric) average_volumetric_strain_per_cell(c);
+      if (cell_remedy) apply_cell_remedy(c);
       update_material_state(c);
     });
   }
@@ -750,96 +743,85 @@ void Engine::compute_strain_increments(std::size_t c) {
   }
 }
 
-/// cell_volumetric remedy: each particle's volumetric increment (dexx + deyy) is replaced by its cell's
-/// volume-weighted mean, split equally between dexx and deyy (the deviatoric part is kept). Chunks
-/// start at cell boundaries, so each cell lies in one chunk.
-void Engine::average_volumetric_strain_per_cell(std::size_t c) {
+/// A cell remedy on every cell of chunk c (chunks start at cell boundaries, so each cell lies in one
+/// chunk; its particles are consecutive in iteration order).
+void Engine::apply_cell_remedy(std::size_t c) {
   const std::size_t k1 = chunk_[c + 1];
   std::size_t a = chunk_[c];
   while (a < k1) {
     const std::int64_t key = cur_.key[order_[a]];
-    std::size_t b = a;
-    double vsum = 0.0, dvsum = 0.0;
-    while (b < k1 && cur_.key[order_[b]] == key) {
-      const double V = cur_.volume[order_[b]];
-      vsum += V;
-      dvsum += V * (dstrain_[3 * b] + dstrain_[3 * b + 1]);
-      ++b;
-    }
-    const double mean = dvsum / vsum;
-    for (std::size_t k = a; k < b; ++k) {
-      double* de = &dstrain_[3 * k];
-      const double shift = 0.5 * (mean - (de[0] + de[1]));
-      de[0] += shift;
-      de[1] += shift;
-    }
+    std::size_t b = a + 1;
+    while (b < k1 && cur_.key[order_[b]] == key) ++b;
+    const std::uint32_t* cell = &order_[a];
+    core::apply_cell_remedy(smoothing_, &dstrain_[3 * a], b - a, [&](std::size_t i) { return cur_.volume[cell[i]]; });
     a = b;
   }
 }
 
-/// nodal_strain remedy, 1/3: the mass-weighted strain increments m N de into the chunk's band.
+/// Nodal remedy, 1/3: w N values into the chunk's band (slots 0-2), and w N into slot 3 when the
+/// weight is the volume (a mass weight is normalised by the nodal mass).
 template <class Shape>
-void Engine::scatter_strain_increments(std::size_t c) {
+void Engine::scatter_remedy_values(std::size_t c) {
   constexpr int W = Shape::kWidth;
+  const NodalProjection proj = nodal_projection(smoothing_);
   double* g = cleared_band(c);
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const double* wx = &weights_[k * 4 * W];
     const double* wy = wx + W;
-    const double m = cur_.mass[order_[k]];
-    const double* de = &dstrain_[3 * k];
+    const std::uint32_t p = order_[k];
+    const double w = proj.volume_weighted ? cur_.volume[p] : cur_.mass[p];
+    double values[3];
+    nodal_values(smoothing_, &dstrain_[3 * k], values);
     double* band_row = g + local_[k];
     for (int b = 0; b < W; ++b, band_row += row_stride) {
       double* gn = band_row;
       for (int a = 0; a < W; ++a, gn += 5) {
-        const double mN = m * wx[a] * wy[b];
-        gn[0] += mN * de[0];
-        gn[1] += mN * de[1];
-        gn[2] += mN * de[2];
+        const double wN = w * wx[a] * wy[b];
+        for (int f = 0; f < proj.values; ++f) gn[f] += wN * values[f];
+        if (proj.volume_weighted) gn[3] += wN;
       }
     }
   }
 }
 
-/// nodal_strain remedy, 2/3: nodal strain increment = sum m N de / nodal mass (chunk order).
-void Engine::nodal_strain_row(int j) {
+/// Nodal remedy, 2/3: nodal value = sum w N value / sum w N (summed in chunk order).
+void Engine::nodal_remedy_row(int j) {
+  const NodalProjection proj = nodal_projection(smoothing_);
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-    double s[3] = {0, 0, 0};
+    double s[4] = {0, 0, 0, 0};
     for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
       if (chunk_row0_[c] > j && chunk_[c] != chunk_[c + 1]) break;
       if (j < chunk_row0_[c] || j >= chunk_row1_[c]) continue;
       const double* gn = pool_.data() + chunk_offset_[c] +
                          5 * (static_cast<std::size_t>(j - chunk_row0_[c]) * box_width_ + (i - bi0_));
-      for (int f = 0; f < 3; ++f) s[f] += gn[f];
+      for (int f = 0; f < 4; ++f) s[f] += gn[f];
     }
-    const double inv_m = mass_[n] > kMassTolerance ? 1.0 / mass_[n] : 0.0;
-    for (int f = 0; f < 3; ++f) nodal_strain_[3 * n + f] = s[f] * inv_m;
+    const double weight = proj.volume_weighted ? s[3] : mass_[n];
+    const double inv_w = weight > (proj.volume_weighted ? 0.0 : kMassTolerance) ? 1.0 / weight : 0.0;
+    for (int f = 0; f < proj.values; ++f) nodal_remedy_[3 * n + f] = s[f] * inv_w;
   }
 }
 
-/// nodal_strain remedy, 3/3: the particle's increment interpolated back, sum N de_i.
+/// Nodal remedy, 3/3: the nodal values interpolated back, sum N value_i, applied to the increment.
 template <class Shape>
-void Engine::gather_strain_increments(std::size_t c) {
+void Engine::gather_remedy_values(std::size_t c) {
   constexpr int W = Shape::kWidth;
+  const int nv = nodal_projection(smoothing_).values;
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const double* wx = &weights_[k * 4 * W];
     const double* wy = wx + W;
     double e[3] = {0, 0, 0};
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      const double* en = &nodal_strain_[3 * node_row];
+      const double* en = &nodal_remedy_[3 * node_row];
       for (int a = 0; a < W; ++a, en += 3) {
         const double N = wx[a] * wy[b];
-        e[0] += N * en[0];
-        e[1] += N * en[1];
-        e[2] += N * en[2];
+        for (int f = 0; f < nv; ++f) e[f] += N * en[f];
       }
     }
-    double* de = &dstrain_[3 * k];
-    de[0] = e[0];
-    de[1] = e[1];
-    de[2] = e[2];
+    apply_nodal_values(smoothing_, e, &dstrain_[3 * k]);
   }
 }
 

@@ -9,7 +9,7 @@
 // boundaries (a function of the state only); threads take chunks dynamically (a preempted thread on a
 // shared machine does not hold the others back), each chunk scatters lock-free into its own band of
 // grid rows, and the bands are summed in chunk order: results are bit-identical for ANY thread count.
-// Per-cell work (the cell_volumetric remedy) stays inside one chunk.
+// Per-cell work (the cell remedies of stress_remedy.hpp) stays inside one chunk.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -17,32 +17,11 @@
 
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
+#include "mpm/core/stress_remedy.hpp"
 #include "mpm/io/deck.hpp"
 #include "mpm/io/particle_table.hpp"
 
 namespace mpm::core {
-
-/// Checkerboard remedies selectable with analysis.stress_smoothing.
-enum class StressSmoothing {
-  None,
-  /// "cell_volumetric": every particle of a cell gets the cell's volume-weighted mean volumetric strain
-  /// increment (its deviatoric increment is kept): the cell-constant dilatation of the B-bar / F-bar
-  /// family (Hughes 1980, IJNME 15, the B-bar method; in MPM: Coombs, Charlton, Cortis & Augarde 2018,
-  /// "Overcoming volumetric locking in material point methods", CMAME 333), which removes the
-  /// particle-to-particle pressure oscillation inside a cell.
-  CellVolumetric,
-  /// "nodal_strain": mass-weighted nodal smoothing of the strain increment (all three components):
-  /// de_i = sum_p m_p N_ip de_p / m_i at the nodes, then de_p = sum_i N_ip de_i back at the particles
-  /// (the projection CB-Geo's pressure_smoothing applies to the pressure, include/particles/particle.tcc
-  /// map_pressure_to_nodes / compute_pressure_smoothing, here for the strain increment; cf. the smoothing
-  /// remedies in Zhang, Chen & Liu 2016, The Material Point Method, Academic Press). Replaces the
-  /// cell-wise constant strain of low-order MPM by a continuous field, removing the stair-step /
-  /// checkerboard stress pattern.
-  NodalStrain,
-};
-
-/// Parses analysis.stress_smoothing ("none" | "cell_volumetric" | "nodal_strain"); throws common::InputError otherwise.
-StressSmoothing parse_stress_smoothing(const std::string& name);
 
 /// The grid fields a p2g pass maps into the chunks' bands and a node phase sums from them.
 struct GridFields {
@@ -118,12 +97,12 @@ class Engine {
   void g2p_chunk(std::size_t c, G2pAlso also);
   template <class Shape>
   void compute_strain_increments(std::size_t c);
-  void average_volumetric_strain_per_cell(std::size_t c);
+  void apply_cell_remedy(std::size_t c);  ///< a cell remedy on each cell of chunk c
   template <class Shape>
-  void scatter_strain_increments(std::size_t c);
-  void nodal_strain_row(int j);
+  void scatter_remedy_values(std::size_t c);  ///< a nodal remedy, 1/3: weighted values to the band
+  void nodal_remedy_row(int j);               ///< 2/3: nodal values = sum w N value / sum w N
   template <class Shape>
-  void gather_strain_increments(std::size_t c);
+  void gather_remedy_values(std::size_t c);   ///< 3/3: interpolated back, applied to the increment
   void update_material_state(std::size_t c);
   template <class Dispatch>
   void update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch);
@@ -147,7 +126,7 @@ class Engine {
   std::vector<double> force_;     ///< 2 per node (external + internal)
   std::vector<double> velocity_;  ///< 2 per node: momentum / mass, velocity constraints applied
   std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
-  std::vector<double> nodal_strain_;  ///< 3 per node: smoothed strain increment (nodal_strain remedy)
+  std::vector<double> nodal_remedy_;  ///< 3 per node: the values a nodal remedy smooths (stress_remedy.hpp)
   /// Per chunk: a band of grid rows [chunk_row0_, chunk_row1_) x box columns, 5 values per node
   /// (m, px, py, fx, fy), at chunk_offset_ in pool_; summed in chunk order by reduce_row.
   std::vector<double> pool_;

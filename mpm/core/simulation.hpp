@@ -17,8 +17,10 @@
 // - dt: analysis.dt, or with analysis.cfl > 0 the smaller of analysis.dt (if > 0) and cfl h / c_p,
 //   c_p = sqrt((K + 4G/3) / rho) of the stiffest material; fixed for the run.
 // - analysis.pic_blend in [0, 1] blends the FLIP and PIC velocity updates; velocity_update = true is PIC.
-// - analysis.stress_smoothing: "none", "cell_volumetric" (cell-mean volumetric strain increment) or
-//   "nodal_strain" (mass-weighted nodal smoothing of the strain increment); see engine.hpp.
+// - analysis.stress_smoothing: "none", "cell_volumetric" (cell-mean volumetric strain increment),
+//   "cell_strain" (cell-mean strain increment plus 0.1 of the deviatoric deviation: the remedy to use),
+//   "nodal_strain" (mass-weighted nodal smoothing of the strain increment) or "nodal_volumetric"
+//   (volume-weighted nodal smoothing of the volumetric increment); see stress_remedy.hpp.
 // - A particle has left the grid when it is outside the mesh region (uGIMP: when its whole domain of
 //   half-size lp = nsize h / 4 is); an error with locate_particles, else it is removed.
 // - A velocity is "runaway" when the particle would move more than one cell in one step (|v| dt > h).

@@ -23,7 +23,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const std::vector<std::string>& stress_smoothing_methods() {
-  static const std::vector<std::string> methods = {"none", "cell_volumetric", "nodal_strain"};
+  static const std::vector<std::string> methods = {"none", "cell_volumetric", "cell_strain", "nodal_strain",
+                                                   "nodal_volumetric"};
   return methods;
 }
 

@@ -624,7 +624,7 @@ def main(argv=None):
         f_mpm = ex.submit(run_mpm_only, bins, scene, out, 1)
         f_smooth = {}
         if not args.no_checkerboard:
-            for remedy in ("cell_volumetric", "nodal_strain"):
+            for remedy in ("cell_volumetric", "cell_strain", "nodal_strain"):
                 f_smooth[remedy] = ex.submit(run_mpm_only, bins, scene, out, 1, "mpm_" + remedy, remedy, snap_t + 0.5, 0.5)
         runs["fem"] = f_fem.result()
         log("fem done: %.1f s" % runs["fem"]["wall"].get("fem", float("nan")))

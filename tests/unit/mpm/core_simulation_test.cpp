@@ -230,7 +230,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(std::make_tuple(mpm::io::Scheme::USF, CellType::Gimp16, std::string("none"), 1),
                       std::make_tuple(mpm::io::Scheme::USL, CellType::Gimp16, std::string("none"), 2),
                       std::make_tuple(mpm::io::Scheme::MUSL, CellType::Linear4, std::string("nodal_strain"), 2),
-                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Gimp16, std::string("cell_volumetric"), 2)));
+                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Gimp16, std::string("cell_volumetric"), 2),
+                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Gimp16, std::string("cell_strain"), 2),
+                      std::make_tuple(mpm::io::Scheme::USF, CellType::Gimp16, std::string("nodal_volumetric"), 2)));
 
 TEST(Simulation, BitIdenticalForAnyThreadCount) {
   // Work is split into chunks that depend on the particle state only, and their grid contributions
@@ -238,7 +240,9 @@ TEST(Simulation, BitIdenticalForAnyThreadCount) {
   const std::pair<mpm::io::Scheme, const char*> cases[] = {{mpm::io::Scheme::MUSL, "none"},
                                                            {mpm::io::Scheme::MUSL, "nodal_strain"},
                                                            {mpm::io::Scheme::USF, "nodal_strain"},
-                                                           {mpm::io::Scheme::USL, "cell_volumetric"}};
+                                                           {mpm::io::Scheme::USL, "cell_volumetric"},
+                                                           {mpm::io::Scheme::MUSL, "cell_strain"},
+                                                           {mpm::io::Scheme::MUSL, "nodal_volumetric"}};
   for (const auto& [scheme, smoothing] : cases) {
     Deck deck = collapsing_column(scheme, CellType::Gimp16, smoothing);
     deck.grid = make_grid(0, 0, 0.25, 48, 32, CellType::Gimp16);
