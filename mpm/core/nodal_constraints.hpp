@@ -39,7 +39,10 @@ struct ConstrainedVelocity {
 ///   min(|v*_t|, mu w_n), never reversed (stick when |v*_t| <= mu w_n).
 /// - Prescribed components then take their value.
 /// The rate (v_new - v_old) / dt is what the particles get under FLIP: at a wall it removes the
-/// particles' normal velocity into the wall together with the nodal one.
+/// particles' normal velocity into the wall together with the nodal one (as Uintah's MPM does,
+/// SerialMPM::setGridBoundaryConditions: "recompute acceleration as the difference between the velocity
+/// interpolated to the grid (no bcs applied) and the new velocity_star"). CB-Geo hands FLIP a = 0 in a
+/// constrained direction and mu |a_n| from the force alone (include/node.tcc); mpm/README.md.
 inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a, double dt, const NodeConstraint& c) {
   Vec2 v = v_old + dt * a;
   if (c.friction_dir >= 0) {

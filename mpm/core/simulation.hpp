@@ -8,7 +8,8 @@
 //   USL : p2g(all)  update_grid  g2p (+ strain increments)  update_stress
 //   MUSL: p2g(all)  update_grid  g2p (+ remap of the updated momentum to the nodes)  nodal_velocity
 //         update_stress
-// update_grid = (nodal velocity,) Cundall damping, friction, v += a dt, velocity constraints;
+// update_grid = (nodal velocity,) Cundall damping, v += a dt, then at constrained nodes the friction and
+//               velocity constraints in momentum form, FLIP getting (v_new - v_old) / dt (nodal_constraints.hpp);
 // update_stress = strain increment, checkerboard remedy, material (one templated loop per material type).
 // Particles are stored as structure-of-arrays, sorted by cell then id each step (deterministic; the
 // order depends only on the state that the snapshot records, so a resume continues bit-identically).
@@ -26,8 +27,8 @@
 // - A velocity is "runaway" when the particle would move more than one cell in one step (|v| dt > h).
 // - The particle volume follows its own volumetric strain increment (CB-Geo uses the cell-centre rate);
 //   CB-Geo's invariant state variables (epsilon, rho, theta) are computed from the stress at snapshot.
-// - USL with linear (ED2Q4) cells is unstable when particles enter empty cells (vanishing nodal mass;
-//   Sulsky, Zhou & Schreyer 1995): prefer MUSL, or uGIMP cells.
+// - USL drops the internal force of nodes lighter than 2 % of a full node (engine.hpp small_mass_): particles
+//   entering empty cells (vanishing nodal mass; Sulsky, Zhou & Schreyer 1995) no longer run away.
 #include <cstddef>
 #include <memory>
 #include <vector>

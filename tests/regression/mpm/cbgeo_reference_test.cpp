@@ -46,14 +46,24 @@ TEST(CbGeoReference, ElasticBlockDrop) {
       EXPECT_CLOSE(ours.vy, ref.at("mean_vy")[r], 1e-9, 0);
       EXPECT_CLOSE(ours.ke, ref.at("kinetic_energy")[r], 1e-6, 1e-9);
     } else {
-      // Impact and rebound (steps 750, 1000): the contact with the base nodes is resolved by one
-      // cell of grid; centroid within 5 mm, mean vy within 0.03 m/s (1 % of the 3 m/s rebound),
-      // kinetic energy within 2 %, peak compressive stress within 15 % (a single-particle extreme).
-      // Measured (mpm at 2 threads): 1.4 mm, 0.003 m/s, 0.07 %, 4.9 %.
-      EXPECT_CLOSE(ours.cy, ref.at("centroid_y")[r], 0.005, 0);
-      EXPECT_CLOSE(ours.vy, ref.at("mean_vy")[r], 0.03, 0);
-      EXPECT_CLOSE(ours.ke, ref.at("kinetic_energy")[r], 0, 0.02);
-      EXPECT_CLOSE(ours.min_syy, ref.at("min_stress_yy")[r], 0, 0.15);
+      // Impact and rebound (steps 750, 1000): an intentional difference from CB-Geo (mpm/README.md
+      // "Boundary conditions under FLIP"). CB-Geo hands FLIP a zero acceleration at the fixed base, so
+      // the particles in the base cell keep their 3.5 m/s into the wall while the grid holds their
+      // positions; here FLIP gets the constrained nodal velocity change, the wall stops them as PIC
+      // does, and the impact dissipates more: the block rebounds slower (mean vy 2.55 against CB-Geo's
+      // 3.02 m/s at step 1000, kinetic energy -20 %). The values below are this code's (mpm, 1 thread,
+      // branch h/mpm-bc, issue 10), kept as the regression; CB-Geo's are printed above for comparison.
+      struct Impact { double cy, vy, ke, min_syy; };
+      const Impact ours_ref = step == 750 ? Impact{1.31525, -2.7305, 26235.0, -389140.0}
+                                          : Impact{1.44984, 2.55237, 23074.9, -55928.3};
+      EXPECT_CLOSE(ours.cy, ours_ref.cy, 1e-4, 0);
+      EXPECT_CLOSE(ours.vy, ours_ref.vy, 1e-3, 1e-3);
+      EXPECT_CLOSE(ours.ke, ours_ref.ke, 0, 1e-3);
+      EXPECT_CLOSE(ours.min_syy, ours_ref.min_syy, 0, 1e-2);
+      EXPECT_CLOSE(ours.cy, ref.at("centroid_y")[r], 0.03, 0);  // still the same rebound within 3 cm
+      if (step == 1000) {
+        EXPECT_LT(ours.vy, ref.at("mean_vy")[r]);  // and the direction of the difference
+      }
     }
   }
   // Particle by particle in free fall (step 250): exact kinematics.

@@ -1,52 +1,76 @@
-// Unit tests of mpm/core/boundary_rules.hpp: CB-Geo's nodal friction rule (include/node.tcc,
-// apply_friction_constraints; FORMATS.md section 5) and Cundall's local damping.
+// Unit tests of mpm/core/nodal_constraints.hpp (velocity and friction constraints in momentum form,
+// Bardenhagen, Brackbill & Sulsky 2000) and mpm/core/boundary_rules.hpp (Cundall's local damping).
 #include <gtest/gtest.h>
 
 #include "mpm/core/boundary_rules.hpp"
+#include "mpm/core/nodal_constraints.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
 
 using mpm::core::apply_cundall_damping;
-using mpm::core::apply_friction_rule;
+using mpm::core::constrained_velocity;
+using mpm::core::NodeConstraint;
+using mpm::core::Vec2;
 
-TEST(FrictionRule, StaticWhenTangentialBelowLimit) {
-  double ax = 2.0, ay = -10.0;  // base (dir 1, outward normal -y): pushed into it
-  apply_friction_rule(1, -1, 0.3, 1e-3, ax, ay, 0.0, 0.0);
-  EXPECT_EQ(ax, 0.0);
-  EXPECT_EQ(ay, -10.0);  // the normal component is left to the velocity constraint
+/// A base node (friction normal -y, dir 1) with a fixed zero normal velocity.
+NodeConstraint base(double mu) {
+  NodeConstraint c;
+  c.fixed = 2u;
+  c.friction_dir = 1;
+  c.sign_n = -1.0;
+  c.mu = mu;
+  return c;
 }
 
-TEST(FrictionRule, StaticSlipsWhenTangentialAboveLimit) {
-  double ax = 5.0, ay = -10.0;
-  apply_friction_rule(1, -1, 0.3, 1e-3, ax, ay, 0.0, 0.0);
-  EXPECT_CLOSE(ax, 5.0 - 3.0, 1e-15, 0);
+TEST(NodalConstraints, FixedComponentHandsTheWholeVelocityChangeToFlip) {
+  NodeConstraint c;
+  c.fixed = 2u;
+  c.fixed_velocity = Vec2(0.0, 0.5);
+  const auto r = constrained_velocity(Vec2(1.0, -2.0), Vec2(3.0, -10.0), 0.01, c);
+  EXPECT_EQ(r.velocity[1], 0.5);
+  EXPECT_CLOSE(r.rate[1], (0.5 - -2.0) / 0.01, 1e-9, 0);  // not 0: the particles lose their -2 m/s too
+  EXPECT_CLOSE(r.velocity[0], 1.0 + 0.03, 1e-15, 0);
+  EXPECT_CLOSE(r.rate[0], 3.0, 1e-12, 0);
 }
 
-TEST(FrictionRule, KineticOpposesTheMotion) {
-  double ax = 1.0, ay = -10.0;
-  apply_friction_rule(1, -1, 0.3, 1e-3, ax, ay, 2.0, 0.0);  // moving in +x
-  EXPECT_CLOSE(ax, 1.0 - 3.0, 1e-15, 0);
+TEST(NodalConstraints, KineticFrictionTakesMuTimesTheNormalImpulse) {
+  // v* = (2 + 0.01 * 1, -0.5 - 0.01 * 10) = (2.01, -0.6): the wall stops 0.6 m/s of approach, friction
+  // takes mu * 0.6 = 0.18 m/s of the slip.
+  const auto r = constrained_velocity(Vec2(2.0, -0.5), Vec2(1.0, -10.0), 0.01, base(0.3));
+  EXPECT_CLOSE(r.velocity[0], 2.01 - 0.18, 1e-12, 0);
+  EXPECT_EQ(r.velocity[1], 0.0);
+  EXPECT_CLOSE(r.rate[0], (2.01 - 0.18 - 2.0) / 0.01, 1e-9, 0);
 }
 
-TEST(FrictionRule, KineticNeverReversesTheVelocity) {
-  double ax = 0.0, ay = -10.0;
-  const double dt = 0.1, vx = 0.05;  // friction would stop it within the step
-  apply_friction_rule(1, -1, 0.3, dt, ax, ay, vx, 0.0);
-  EXPECT_CLOSE(vx + ax * dt, 0.0, 1e-15, 0);
+TEST(NodalConstraints, StaticFrictionSticks) {
+  const auto r = constrained_velocity(Vec2(0.0, 0.0), Vec2(2.0, -10.0), 0.01, base(0.3));  // 0.02 <= 0.3 * 0.1
+  EXPECT_EQ(r.velocity[0], 0.0);
+  EXPECT_CLOSE(r.rate[0], 0.0, 1e-15, 0);
 }
 
-TEST(FrictionRule, InactiveWhenPullingAway) {
-  double ax = 5.0, ay = 3.0;  // moving off the base
-  apply_friction_rule(1, -1, 0.3, 1e-3, ax, ay, 1.0, 0.0);
-  EXPECT_EQ(ax, 5.0);
+TEST(NodalConstraints, FrictionNeverReversesTheSlip) {
+  const auto r = constrained_velocity(Vec2(0.01, -1.0), Vec2(0.0, 0.0), 0.01, base(0.3));  // 0.01 < 0.3
+  EXPECT_EQ(r.velocity[0], 0.0);
 }
 
-TEST(FrictionRule, WallWithNormalAlongX) {
-  double ax = 10.0, ay = -4.0;  // right wall (dir 0, outward +x), pushed into it, sliding down
-  apply_friction_rule(0, +1, 0.5, 1e-3, ax, ay, 0.0, -1.0);
-  EXPECT_CLOSE(ay, -4.0 + 5.0, 1e-15, 0);
-  EXPECT_EQ(ax, 10.0);
+TEST(NodalConstraints, NoFrictionWhenMovingOffTheWall) {
+  const auto r = constrained_velocity(Vec2(2.0, 0.5), Vec2(0.0, -10.0), 0.01, base(0.3));  // v*_y = 0.4 > 0
+  EXPECT_CLOSE(r.velocity[0], 2.0, 1e-15, 0);
+  EXPECT_EQ(r.velocity[1], 0.0);  // the velocity constraint still holds the node
+}
+
+TEST(NodalConstraints, WallWithNormalAlongX) {
+  NodeConstraint c;  // right wall: outward +x, free normal (one-sided contact)
+  c.friction_dir = 0;
+  c.sign_n = 1.0;
+  c.mu = 0.5;
+  const auto r = constrained_velocity(Vec2(1.0, -3.0), Vec2(0.0, 0.0), 0.01, c);
+  EXPECT_EQ(r.velocity[0], 0.0);           // the approach is stopped
+  EXPECT_CLOSE(r.velocity[1], -2.5, 1e-15, 0);  // slip reduced by 0.5 * 1
+  const auto away = constrained_velocity(Vec2(-1.0, -3.0), Vec2(0.0, 0.0), 0.01, c);
+  EXPECT_EQ(away.velocity[0], -1.0);       // leaving the wall: free
+  EXPECT_EQ(away.velocity[1], -3.0);
 }
 
 TEST(CundallDamping, ReducesForceAgainstVelocity) {
