@@ -170,8 +170,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
   const ExtractedBoundaries supports = o.ignore_supports ? ExtractedBoundaries{} : extract_boundaries(model);
-  const BoundaryOptionsGiven given{o.left_wall.has_value(), o.right_wall.has_value(), o.base.has_value(), !o.extent.empty(),
-                                   o.deck.base_y.has_value()};
+  const BoundaryOptionsGiven given{o.left_wall.has_value(), o.right_wall.has_value(), o.base.has_value(), o.deck.base_y.has_value()};
   const std::vector<BoundaryChoice> boundaries = apply_supports(supports, given, deck);
   const TransferState& state = assembled.state;
   if (const auto bad = inverted_elements(state); !bad.empty()) {

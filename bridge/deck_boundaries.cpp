@@ -69,7 +69,7 @@ std::vector<BoundaryChoice> apply_supports(const ExtractedBoundaries& supports, 
   }
   b.condition = base_text(deck);
   out.push_back(std::move(b));
-  if (supports.from_model && !given.extent) {
+  if (supports.from_model) {  // with --extent only the base height is taken (when it lies inside that grid)
     GridAnchors anchors;
     if (left && deck.left != Wall::None) anchors.left = left->coordinate;
     if (right && deck.right != Wall::None) anchors.right = right->coordinate;

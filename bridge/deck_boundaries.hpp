@@ -15,7 +15,7 @@ namespace bridge {
 
 /// The options the user gave explicitly (they override the FEM supports).
 struct BoundaryOptionsGiven {
-  bool left = false, right = false, base = false, extent = false, base_y = false;
+  bool left = false, right = false, base = false, base_y = false;
 };
 
 /// What one grid edge became.

@@ -110,6 +110,15 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
     g.x0 = ext[0];
     g.y0 = ext[2];
     set_cell_counts(ext[1] - ext[0], ext[3] - ext[2]);
+    if (options.anchors && warnings) {
+      auto off_line = [&](const std::optional<double>& line, double edge, const char* wall) {
+        if (line && std::abs(*line - edge) > 1e-9 * g.h)
+          warnings->push_back(std::string("--extent: the ") + wall + " lies on the grid's edge at x = " + num(edge) +
+                              ", not on its FEM support line at x = " + num(*line));
+      };
+      off_line(options.anchors->left, g.x0, "left wall");
+      off_line(options.anchors->right, g.x0 + g.nx * g.h, "right wall");
+    }
   } else {
     // Walls and base on grid lines; the runout area (3 model widths) only beyond a free side, 0.25 heights
     // above the top. Without FEM supports: the legacy layout, a wall at the model's left side.

@@ -81,7 +81,11 @@ TEST(OpenSeesReferenceRuns, SSPquadBlockSurfaceLoad) {
   std::ifstream ref_in(case_dir(name) / "ref/model.json"), out_in(scratch.path() / "model.json");
   ASSERT_TRUE(out_in.good());
   const auto ref = nlohmann::json::parse(ref_in);
-  const auto out = nlohmann::json::parse(out_in);  // throws (fails the test) if not valid JSON
+  auto out = nlohmann::json::parse(out_in);  // throws (fails the test) if not valid JSON
+  // fem_tcl's one addition (fem_tcl/README.md): the supports, which OpenSees 3.8's JSON does not carry.
+  ASSERT_TRUE(out["StructuralAnalysisModel"].contains("constraints"));
+  EXPECT_FALSE(out["StructuralAnalysisModel"]["constraints"]["fix"].empty());
+  out["StructuralAnalysisModel"].erase("constraints");
   EXPECT_TRUE(same_json(ref, out, ""));
 }
 

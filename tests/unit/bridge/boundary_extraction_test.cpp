@@ -270,6 +270,17 @@ TEST(DeckBoundaries, GridAlignedToSupportLines) {
   const auto warned = bridge::build_deck(st, {}, odd);
   ASSERT_EQ(warned.warnings.size(), 1u);
   EXPECT_NE(warned.warnings[0].find("--cell-size"), std::string::npos) << warned.warnings[0];
+
+  bridge::DeckOptions extent;  // --extent wins; a wall off its FEM line is said, the base still on its line
+  extent.extent = std::array<double, 4>{-1.04, 5.2, -1.04, 5};
+  extent.cell_size = 1.04;
+  bridge::apply_supports(b, {}, extent);
+  const auto with_extent = bridge::build_deck(st, {}, extent);
+  EXPECT_CLOSE(with_extent.grid.x0, -1.04, 0, 0);
+  EXPECT_CLOSE(with_extent.grid.x0 + with_extent.grid.nx * with_extent.grid.h, 5.2, 1e-12, 1e-12);
+  EXPECT_CLOSE(with_extent.base_y, 0, 0, 0);
+  ASSERT_EQ(with_extent.warnings.size(), 1u);
+  EXPECT_NE(with_extent.warnings[0].find("--extent: the left wall lies on the grid's edge at x = -1.04"), std::string::npos) << with_extent.warnings[0];
 }
 
 }  // namespace
