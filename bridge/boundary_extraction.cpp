@@ -78,6 +78,13 @@ std::string node_list_text(const std::vector<long>& tags) {
 ExtractedBoundaries extract_boundaries(const FemModel& model) {
   ExtractedBoundaries out;
   out.from_model = model.has_constraints;
+  if (!model.boundary_devices.empty()) {
+    std::string tags;
+    for (std::size_t i = 0; i < model.boundary_devices.size() && i < 8; ++i) tags += (i ? " " : "") + std::to_string(model.boundary_devices[i]);
+    if (model.boundary_devices.size() > 8) tags += " ... (" + std::to_string(model.boundary_devices.size()) + " elements)";
+    out.warnings.push_back("zeroLength elements " + tags + " (springs and dashpots of the FEM boundary) have no MPM "
+                           "counterpart and are not transferred; the MPM boundaries come from the supports and options");
+  }
   if (!model.has_constraints) {
     out.notes.push_back(model.source.string() + ": no supports in the model file (OpenSees' print -JSON writes no fix or "
                         "equalDOF; fem_tcl's does): the MPM boundaries come from the options (--left-wall, --right-wall, --base)");

@@ -236,6 +236,10 @@ void add_element(FemModel& model, const json& j, const std::string& where_text) 
   FemElement e;
   e.tag = tag_of(j, where_text);
   const std::string type = j.value("type", std::string());
+  if (type == "ZeroLength") {
+    model.boundary_devices.push_back(e.tag);
+    return;
+  }
   if (type == "SSPquad") {
     e.kind = ElementKind::SSPquad;
   } else if (type == "FourNodeQuad" || type == "quad") {

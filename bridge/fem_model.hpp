@@ -67,6 +67,9 @@ struct FemModel {
   bool has_constraints = false;
   std::vector<FemFix> fixes;
   std::vector<FemTie> ties;
+  /// Tags of zeroLength elements (springs and dashpots of a compliant base or free-field sides): boundary
+  /// devices of the FEM model, not soil, so they are not transferred.
+  std::vector<long> boundary_devices;
 
   /// Index of the node with `tag`, or -1.
   int node_index(long tag) const;

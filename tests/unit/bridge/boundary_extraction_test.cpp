@@ -284,3 +284,19 @@ TEST(DeckBoundaries, GridAlignedToSupportLines) {
 }
 
 }  // namespace
+
+// A compliant base (a dummy node 100 under node 1, joined by a zeroLength dashpot, as in an OpenSees
+// site-response model): the dashpot is a boundary device, not soil, so it is skipped with a warning naming it.
+TEST(BoundaryExtraction, ZeroLengthDashpotsAreNamedNotTransferred) {
+  Mesh m = box_on_rollers();
+  m.nodes.push_back("{\"name\": 100, \"ndf\": 2, \"crd\": [0, 0]}");
+  m.elements.push_back("{\"name\": 50, \"type\": \"ZeroLength\", \"nodes\": [100, 1], \"materials\": [\"7\"], \"dof\": [1]}");
+  m.fix(100, 1, 1);
+  const auto model = bridge::parse_fem_model(m.json(), "model.json");
+  EXPECT_EQ(model.elements.size(), 12u);
+  EXPECT_EQ(model.boundary_devices, std::vector<long>{50});
+  const auto b = bridge::extract_boundaries(model);
+  EXPECT_NE(all(b.warnings).find("zeroLength elements 50 (springs and dashpots of the FEM boundary)"), std::string::npos)
+      << all(b.warnings);
+  ASSERT_TRUE(b.line(bridge::GridEdge::Base));  // the soil's own supports still make the base
+}
