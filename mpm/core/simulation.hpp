@@ -16,7 +16,8 @@
 // Semantics worth knowing (CB-Geo's where not stated):
 // - dt: analysis.dt, or with analysis.cfl > 0 the smaller of analysis.dt (if > 0) and cfl h / c_p,
 //   c_p = sqrt((K + 4G/3) / rho) of the stiffest material; fixed for the run.
-// - analysis.pic_blend in [0, 1] blends the FLIP and PIC velocity updates; velocity_update = true is PIC.
+// - analysis.transfer: FLIP (velocity_update false), PIC (velocity_update true), or APIC; pic_blend in
+//   [0, 1] blends the FLIP and PIC velocity updates (velocity_transfer.hpp).
 // - analysis.stress_smoothing: "none", "cell_volumetric" (cell-mean volumetric strain increment) or
 //   "nodal_strain" (mass-weighted nodal smoothing of the strain increment); see engine.hpp.
 // - A particle has left the grid when it is outside the mesh region (uGIMP: when its whole domain of
@@ -26,6 +27,7 @@
 //   CB-Geo's invariant state variables (epsilon, rho, theta) are computed from the stress at snapshot.
 // - USL with linear (ED2Q4) cells is unstable when particles enter empty cells (vanishing nodal mass;
 //   Sulsky, Zhou & Schreyer 1995): prefer MUSL, or uGIMP cells.
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -63,6 +65,9 @@ class Simulation {
   std::size_t particle_count() const;
   /// Full particle state in CB-Geo's record form, sorted by particle id (exact doubles).
   std::vector<io::ParticleRecord> snapshot() const;
+  /// The APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s) in snapshot() order; empty unless the
+  /// transfer is APIC. Written beside the particle table so that a resumed run continues bit for bit.
+  std::vector<std::array<double, 4>> affine_snapshot() const;
 
  private:
   std::unique_ptr<Engine> engine_;

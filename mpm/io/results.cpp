@@ -204,16 +204,21 @@ void ResultsWriter::add_row(const SeriesRow& row) {
   row_steps_.push_back(row.step);
 }
 
-void ResultsWriter::write_particles(long long step, double time, std::span<const ParticleRecord> particles) {
+void ResultsWriter::write_particles(long long step, double time, std::span<const ParticleRecord> particles,
+                                    std::span<const std::array<double, 4>> affine) {
   const fs::path file = particle_file(step);
-  write_particle_table(file, particles, [&](std::int64_t id) { write_xdmf_datasets(static_cast<hid_t>(id), particles, file.string()); });
+  write_particle_table(file, particles, [&](std::int64_t id) {
+    write_xdmf_datasets(static_cast<hid_t>(id), particles, file.string());
+    if (!affine.empty()) write_affine_dataset(id, affine, file.string());
+  });
   std::erase_if(xdmf_, [&](const XdmfEntry& e) { return e.step == step; });
   xdmf_.push_back({step, time, particles.size()});
 }
 
-void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles) {
+void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
+                                 std::span<const std::array<double, 4>> affine) {
   prepare();
-  write_particles(step, time, particles);
+  write_particles(step, time, particles, affine);
   write_xdmf();
   add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
   write_series();
@@ -225,9 +230,10 @@ void ResultsWriter::write_series_row(long long step, double time, double dt, std
   write_series();
 }
 
-fs::path ResultsWriter::write_state(long long step, double time, std::span<const ParticleRecord> particles) {
+fs::path ResultsWriter::write_state(long long step, double time, std::span<const ParticleRecord> particles,
+                                   std::span<const std::array<double, 4>> affine) {
   prepare();
-  write_particles(step, time, particles);
+  write_particles(step, time, particles, affine);
   write_xdmf();
   return particle_file(step);
 }

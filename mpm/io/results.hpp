@@ -55,12 +55,15 @@ class ResultsWriter {
   std::filesystem::path folder() const { return folder_; }
   std::filesystem::path particle_file(long long step) const;
 
-  /// An output step: particles<step>.h5, then particles.xdmf and series.csv rewritten.
-  void write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles);
+  /// An output step: particles<step>.h5, then particles.xdmf and series.csv rewritten. `affine` (APIC
+  /// runs: one matrix per record, same order) goes to the file's kAffineDataset; empty: none written.
+  void write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
+                    std::span<const std::array<double, 4>> affine = {});
   /// A series.csv row only (the last step of a run when it is not an output step).
   void write_series_row(long long step, double time, double dt, std::span<const ParticleRecord> particles);
   /// The last good state after a numerical failure: particles<step>.h5 (resumable), listed in the XDMF.
-  std::filesystem::path write_state(long long step, double time, std::span<const ParticleRecord> particles);
+  std::filesystem::path write_state(long long step, double time, std::span<const ParticleRecord> particles,
+                                    std::span<const std::array<double, 4>> affine = {});
 
  private:
   struct XdmfEntry {
@@ -69,7 +72,8 @@ class ResultsWriter {
     std::size_t count;
   };
   void prepare();
-  void write_particles(long long step, double time, std::span<const ParticleRecord> particles);
+  void write_particles(long long step, double time, std::span<const ParticleRecord> particles,
+                       std::span<const std::array<double, 4>> affine);
   void add_row(const SeriesRow& row);
   void write_series() const;
   void write_xdmf() const;
