@@ -613,6 +613,12 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     double lxx = 0, lyy = 0, lxy = 0, lyx = 0;
     double B[4] = {0, 0, 0, 0};  // APIC: sum N v_new (x_i - x_p)^T
     const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
+    double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
+    if constexpr (Affine)
+      for (int a = 0; a < W; ++a) {
+        dxs[a] = offset[0] + a * grid_.hx;
+        dys[a] = offset[1] + a * grid_.hy;
+      }
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
       const double* u = &updated_[4 * node_row];
@@ -621,11 +627,11 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         vgx += N * u[0];
         vgy += N * u[1];
         if constexpr (Affine) {
-          const double dx = offset[0] + a * grid_.hx, dy = offset[1] + b * grid_.hy;
-          B[0] += N * u[0] * dx;
-          B[1] += N * u[0] * dy;
-          B[2] += N * u[1] * dx;
-          B[3] += N * u[1] * dy;
+          const double Nvx = N * u[0], Nvy = N * u[1];
+          B[0] += Nvx * dxs[a];
+          B[1] += Nvx * dys[b];
+          B[2] += Nvy * dxs[a];
+          B[3] += Nvy * dys[b];
         } else {
           agx += N * u[2];
           agy += N * u[3];

@@ -82,8 +82,8 @@ template <class Shape, bool Affine>
 struct MomentumContribution {
   static constexpr int W = Shape::kWidth;
   double mvx = 0, mvy = 0;
-  double mb[4] = {0, 0, 0, 0};      ///< m_p B_p
-  double ax[W] = {}, ay[W] = {};    ///< per-axis affine weights (affine_axis_weights)
+  /// m_p B_p times the per-axis affine weights (affine_axis_weights): xx ax_a, xy ay_b, yx ax_a, yy ay_b
+  double bxx[W] = {}, bxy[W] = {}, byx[W] = {}, byy[W] = {};
   const double* wx = nullptr;
   const double* wy = nullptr;
 
@@ -93,17 +93,23 @@ struct MomentumContribution {
                        double hx, double hy)
       : mvx(m * vx), mvy(m * vy), wx(w), wy(w + W) {
     if constexpr (Affine) {
-      for (int i = 0; i < 4; ++i) mb[i] = m * B[i];
+      double ax[W], ay[W];
       affine_axis_weights(Shape{}, w, w + 2 * W, ox, hx, ax);
       affine_axis_weights(Shape{}, w + W, w + 3 * W, oy, hy, ay);
+      for (int k = 0; k < W; ++k) {
+        bxx[k] = m * B[0] * ax[k];
+        bxy[k] = m * B[1] * ay[k];
+        byx[k] = m * B[2] * ax[k];
+        byy[k] = m * B[3] * ay[k];
+      }
     }
   }
   double x(int a, int b, double N) const {
-    if constexpr (Affine) return mvx * N + mb[0] * ax[a] * wy[b] + mb[1] * wx[a] * ay[b];
+    if constexpr (Affine) return mvx * N + bxx[a] * wy[b] + bxy[b] * wx[a];
     return mvx * N;
   }
   double y(int a, int b, double N) const {
-    if constexpr (Affine) return mvy * N + mb[2] * ax[a] * wy[b] + mb[3] * wx[a] * ay[b];
+    if constexpr (Affine) return mvy * N + byx[a] * wy[b] + byy[b] * wx[a];
     return mvy * N;
   }
 };
