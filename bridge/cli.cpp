@@ -334,7 +334,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--nsteps", o.deck.nsteps, "number of steps (overrides --duration)")->group("MPM deck");
   app.add_option("--output-steps", o.deck.output_steps, "write particles every N steps (default: every 0.5 s, at most nsteps - 1)")->group("MPM deck");
   app.add_option("--scheme", o.deck.scheme, "mpm_scheme: usf, usl or musl")->capture_default_str()->group("MPM deck");
-  app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC) instead of FLIP")->group("MPM deck");
+  app.add_option("--transfer", o.deck.transfer, "velocity transfer (analysis.transfer): apic, flip or pic")
+      ->check(CLI::IsMember({"apic", "flip", "pic"}))->capture_default_str()->group("MPM deck");
+  app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC): the same as --transfer pic")->group("MPM deck");
   app.add_option("--damping", o.deck.damping, "Cundall damping factor")->capture_default_str()->group("MPM deck");
   app.add_flag("--quiet", o.quiet, "print nothing on success (the report is still written to report.json)");
   app.footer("Exit status: 0 done; 2 bad input (one line naming the option, file, line or key; nothing written); "

@@ -296,7 +296,9 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   analysis["dt"] = d.dt;
   analysis["nsteps"] = d.nsteps;
   analysis["uuid"] = options.uuid;
-  analysis["velocity_update"] = options.velocity_update;
+  const bool pic = options.velocity_update || options.transfer == "pic";
+  analysis["velocity_update"] = pic;
+  if (!pic) analysis["transfer"] = options.transfer;
   analysis["locate_particles"] = true;
   analysis["damping"] = {{"type", "Cundall"}, {"damping_factor", options.damping}};
   analysis["resume"] = {{"resume", true}, {"uuid", options.uuid}, {"step", options.step}};

@@ -47,7 +47,10 @@ struct DeckOptions {
   std::optional<long long> nsteps;            ///< overrides duration
   std::optional<long long> output_steps;      ///< default: every 0.5 s, at most nsteps - 1
   std::string scheme = "usf";
-  bool velocity_update = false;               ///< true: PIC, false: FLIP
+  bool velocity_update = false;               ///< true: PIC (CB-Geo's key; same as transfer "pic")
+  /// analysis.transfer: "apic" (default: it brings the study's columns to rest without a PIC blend,
+  /// docs/study/transfer_comparison.md), "flip" or "pic".
+  std::string transfer = "apic";
   double damping = 0;                         ///< Cundall damping factor
 };
 

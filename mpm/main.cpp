@@ -19,6 +19,7 @@ namespace {
 
 int run(const std::string& working_dir, const std::string& input_file, int threads) {
   const mpm::io::Deck deck = mpm::io::read_deck(working_dir, input_file);
+  for (const auto& w : deck.warnings) std::fprintf(stderr, "mpm: warning: %s\n", w.c_str());
   mpm::core::Simulation sim(deck, threads);
   mpm::io::ResultsWriter results(deck);
   mpm::io::ProgressLine progress(deck.first_step, deck.analysis.nsteps);
@@ -28,7 +29,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
     while (sim.step_index() < nsteps) {
       const long long step = sim.step_index();
       sim.step();
-      if (step % every == 0) results.write_output(step, sim.time(), sim.dt(), sim.snapshot());
+      if (step % every == 0) results.write_output(step, sim.time(), sim.dt(), sim.snapshot(), sim.affine_snapshot());
       progress.update(step, sim.time(), sim.dt(), sim.particle_count());
     }
   } catch (const common::NumericalError& e) {
@@ -37,7 +38,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
     const long long last = sim.step_index() - 1;
     std::string saved = "no step completed, nothing written";
     if (last >= deck.first_step) saved = "last good state (step " + std::to_string(last) + ") written to " +
-                                         results.write_state(last, sim.time(), sim.snapshot()).string();
+                                         results.write_state(last, sim.time(), sim.snapshot(), sim.affine_snapshot()).string();
     std::fprintf(stderr, "mpm: %s; %s\n", common::printable(e.what()).c_str(), saved.c_str());
     return 3;
   }

@@ -1,6 +1,6 @@
 // Throughput and accuracy of the MPM engine (not a test; prints figures).
 //
-//   mpm_core_benchmark [--quick | --throughput | --accuracy | --runout [threads [usl|musl|usf [pic_blend]]]]
+//   mpm_core_benchmark [--quick | --throughput [steps [repeats]] | --accuracy | --runout [threads [usl|musl|usf [pic_blend]]]]
 //
 // Figures are wall-clock medians; the CPU-time rate (particle-steps per CPU-second of all threads) is
 // printed next to them because on a shared machine the wall clock also measures the other jobs.
@@ -8,8 +8,9 @@
 //
 // 1. Particle-steps per second on the paper's column: 50 m x 40 m Mohr-Coulomb column (phi 22.2 deg,
 //    c 1 Pa, psi 0, E 172 MPa, nu 0.23, rho 1925) in a 150 m x 45 m domain of 1 m uGIMP cells, 4 x 4
-//    particles per cell (32,000), K0 initial stress, rough base (mu 0.4), USL and MUSL, FLIP, dt at
-//    CFL 0.5. Median over repeats of a timed block of steps, at 1 and 2 threads.
+//    particles per cell (32,000), K0 initial stress, rough base (mu 0.4), USL and MUSL, FLIP and APIC, dt
+//    at CFL 0.5. Median over repeats of a timed block of steps, at 1 and 2 threads; FLIP and APIC blocks
+//    alternate, and their cost ratio is the median of the paired blocks' CPU-time ratios.
 // 2. Speed against error: the vibrating bar (period error vs the analytical mode) and the column's
 //    runout at t = 2 s against the finest resolution run here, for a few resolutions.
 #include <algorithm>
@@ -78,28 +79,50 @@ double runout_p98(const std::vector<mpm::io::ParticleRecord>& ps) {
   return x[static_cast<std::size_t>(0.98 * static_cast<double>(x.size() - 1))];
 }
 
-void throughput(bool quick) {
-  std::printf("== Paper column throughput (32,000 uGIMP particles, Mohr-Coulomb, rough base, FLIP, CFL 0.5) ==\n");
-  const int steps = quick ? 50 : 200, repeats = quick ? 3 : 5;
+/// A timed block of `steps` steps: wall-clock and CPU-time rates in particle-steps per second.
+std::pair<double, double> timed_block(mpm::core::Simulation& sim, int steps) {
+  const auto t0 = Clock::now();
+  const double c0 = cpu_seconds();
+  for (int i = 0; i < steps; ++i) sim.step();
+  const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double c = cpu_seconds() - c0;
+  const double work = static_cast<double>(sim.particle_count()) * steps;
+  return {work / s, work / c};
+}
+
+void throughput(bool quick, int steps_arg = 0, int repeats_arg = 0) {
+  std::printf("== Paper column throughput (32,000 uGIMP particles, Mohr-Coulomb, rough base, CFL 0.5): FLIP and "
+              "APIC ==\n");
+  const int steps = steps_arg > 0 ? steps_arg : (quick ? 50 : 200);
+  const int repeats = repeats_arg > 0 ? repeats_arg : (quick ? 3 : 5);
   for (auto scheme : {mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
     for (int threads : {1, 2}) {
-      const Deck deck = paper_column(1.0, 4, scheme);
-      mpm::core::Simulation sim(deck, threads);
-      for (int i = 0; i < 20; ++i) sim.step();  // warm-up (the column starts to move)
-      std::vector<double> rates, cpu_rates;
-      for (int r = 0; r < repeats; ++r) {
-        const auto t0 = Clock::now();
-        const double c0 = cpu_seconds();
-        for (int i = 0; i < steps; ++i) sim.step();
-        const double s = std::chrono::duration<double>(Clock::now() - t0).count();
-        const double c = cpu_seconds() - c0;
-        rates.push_back(static_cast<double>(sim.particle_count()) * steps / s);
-        cpu_rates.push_back(static_cast<double>(sim.particle_count()) * steps / c);
+      // FLIP and APIC advance side by side, their timed blocks alternating, so both see the same load.
+      Deck deck = paper_column(1.0, 4, scheme);
+      mpm::core::Simulation flip(deck, threads);
+      deck.analysis.transfer = mpm::io::Transfer::APIC;
+      mpm::core::Simulation apic(deck, threads);
+      for (int i = 0; i < 20; ++i) {  // warm-up (the column starts to move)
+        flip.step();
+        apic.step();
       }
-      std::printf("%-4s threads %d: %6.2f M particle-steps/s wall (median of %d x %d steps; dt %.4g s); "
-                  "%5.2f M per CPU-second; load average %s\n",
-                  scheme == mpm::io::Scheme::USL ? "USL" : "MUSL", threads, median(rates) / 1e6, repeats, steps,
-                  sim.dt(), median(cpu_rates) / 1e6, load_average().c_str());
+      std::vector<double> rates[2], cpu_rates[2], ratios;
+      for (int r = 0; r < repeats; ++r) {
+        const auto f = timed_block(flip, steps), a = timed_block(apic, steps);
+        rates[0].push_back(f.first);
+        cpu_rates[0].push_back(f.second);
+        rates[1].push_back(a.first);
+        cpu_rates[1].push_back(a.second);
+        ratios.push_back(f.second / a.second);  // cost per particle-step, APIC / FLIP (CPU time)
+      }
+      const char* name = scheme == mpm::io::Scheme::USL ? "USL" : "MUSL";
+      for (int t = 0; t < 2; ++t)
+        std::printf("%-4s %-4s threads %d: %6.2f M particle-steps/s wall (median of %d x %d steps; dt %.4g s); "
+                    "%5.2f M per CPU-second; load average %s\n",
+                    name, t == 0 ? "FLIP" : "APIC", threads, median(rates[t]) / 1e6, repeats, steps, flip.dt(),
+                    median(cpu_rates[t]) / 1e6, load_average().c_str());
+      std::printf("%-4s threads %d: APIC / FLIP cost per particle-step %.3f (median of %d paired blocks, CPU time)\n",
+                  name, threads, median(ratios), repeats);
     }
   }
 }
@@ -197,7 +220,9 @@ void runout(int threads, mpm::io::Scheme scheme, double pic_blend) {
 }
 
 int main(int argc, char** argv) {
-  const char* usage = "usage: mpm_core_benchmark [--quick | --throughput | --accuracy | --runout [threads [usl|musl|usf [pic_blend]]]]\n";
+  const char* usage =
+      "usage: mpm_core_benchmark [--quick | --throughput [steps [repeats]] | --accuracy | --runout [threads [usl|musl|usf "
+      "[pic_blend]]]]\n";
   if (argc > 1 && std::strcmp(argv[1], "--quick") != 0 && std::strcmp(argv[1], "--throughput") != 0 &&
       std::strcmp(argv[1], "--accuracy") != 0 && std::strcmp(argv[1], "--runout") != 0) {
     const bool help = std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0;
@@ -216,7 +241,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  throughput(quick);
+  const bool only_throughput = argc > 1 && std::strcmp(argv[1], "--throughput") == 0;
+  throughput(quick, only_throughput && argc > 2 ? std::atoi(argv[2]) : 0,
+             only_throughput && argc > 3 ? std::atoi(argv[3]) : 0);
   if (!(argc > 1 && std::strcmp(argv[1], "--throughput") == 0)) accuracy(quick);
   return 0;
 }

@@ -33,6 +33,7 @@ void ParticleArrays::resize(std::size_t n) {
                   &epsv})
     v->resize(n);
   stress.resize(4 * n);
+  affine.resize(4 * n);
   svars.resize(n * kStateVariables);
   key.resize(n);
 }
@@ -64,9 +65,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   }
 
   scheme_ = an.scheme;
-  pic_ = an.velocity_update ? 1.0 : an.pic_blend;
-  if (!(pic_ >= 0.0 && pic_ <= 1.0))
-    throw common::InputError("analysis.pic_blend", "expected a number in [0, 1], got " + num(pic_));
+  transfer_ = VelocityTransfer::from(an);
   locate_ = an.locate_particles;
   damping_ = an.cundall_damping;
   if (!(damping_ >= 0.0 && damping_ < 1.0))
@@ -137,6 +136,13 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   const std::size_t n = deck.particles.size();
   cur_.resize(n);
   nxt_.resize(n);
+  if (!deck.particle_affine.empty()) {
+    if (deck.particle_affine.size() != n)
+      throw common::InputError("particles", "the APIC matrices (" + std::to_string(deck.particle_affine.size()) +
+                                                ") do not match the particles (" + std::to_string(n) + ")");
+    if (transfer_.affine())
+      for (std::size_t p = 0; p < n; ++p) std::copy_n(deck.particle_affine[p].data(), 4, &cur_.affine[4 * p]);
+  }
   std::vector<std::uint32_t> per_cell(static_cast<std::size_t>(cells_x_) * cells_y_, 0);
   for (std::size_t p = 0; p < n; ++p) {
     const io::ParticleRecord& r = deck.particles[p];
@@ -199,6 +205,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   base_.resize(n);
   weights_.resize(n * 4 * static_cast<std::size_t>(width));
   dstrain_.resize(3 * n);
+  if (transfer_.affine()) stencil_offset_.resize(2 * n);
   order_.reserve(n);
   sorted_.resize(n);
   bucket_.resize(static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
@@ -396,7 +403,13 @@ template <class Shape>
 void Engine::p2g(GridFields fields) {
   assert(fields.mass == fields.momentum);
   if (!fields.mass) wait_for_previous_phase();  // the mass is mapped first in every scheme
-  for_each_chunk([&](std::size_t c) { p2g_chunk<Shape>(c, fields); });
+  const bool affine = transfer_.affine() && fields.momentum;
+  for_each_chunk([&](std::size_t c) {
+    if (affine)
+      p2g_chunk<Shape, true>(c, fields);
+    else
+      p2g_chunk<Shape, false>(c, fields);
+  });
 }
 
 void Engine::nodal_velocity(GridFields summed) {
@@ -419,7 +432,12 @@ void Engine::update_grid(GridFields summed) {
 template <class Shape>
 void Engine::g2p(G2pAlso also) {
   wait_for_previous_phase();
-  for_each_chunk([&](std::size_t c) { g2p_chunk<Shape>(c, also); });
+  for_each_chunk([&](std::size_t c) {
+    if (transfer_.affine())
+      g2p_chunk<Shape, true>(c, also);
+    else
+      g2p_chunk<Shape, false>(c, also);
+  });
 }
 
 double* Engine::cleared_band(std::size_t c) {
@@ -429,11 +447,12 @@ double* Engine::cleared_band(std::size_t c) {
 }
 
 /// Particle-to-grid transfer (Sulsky et al. 1994, eqs. 14-17): nodal mass sum m N, momentum sum m N v,
-/// force sum m N g - V grad(N) . sigma. The pass that maps the mass (the first of a step) computes the
-/// particle's weights (once per step) and stores them for the later phases. Reads the current particle
-/// state through order_, except the forces of USF, which use the stress and volume just updated (next
-/// buffer).
-template <class Shape>
+/// force sum m N g - V grad(N) . sigma; with APIC (Affine) the momentum adds m N B_p D_p^-1 (x_i - x_p)
+/// (MomentumContribution, velocity_transfer.hpp). The pass that maps the mass (the first of a step)
+/// computes the particle's weights (once per step) and stores them for the later phases. Reads the
+/// current particle state through order_, except the forces of USF, which use the stress and volume just
+/// updated (next buffer).
+template <class Shape, bool Affine>
 void Engine::p2g_chunk(std::size_t c, GridFields fields) {
   constexpr int W = Shape::kWidth;
   double* g = cleared_band(c);
@@ -454,13 +473,20 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
       }
       base_[k] = bi + bj * nx_;
       local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
+      if (!stencil_offset_.empty()) {
+        stencil_offset_[2 * k] = grid_.x0 + bi * grid_.hx - cur_.x[p];
+        stencil_offset_[2 * k + 1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
+      }
     }
     const double* wx = wk;
     const double* wy = wk + W;
     const double* dwx = wk + 2 * W;
     const double* dwy = wk + 3 * W;
     const double m = cur_.mass[p];
-    const double mvx = m * cur_.vx[p], mvy = m * cur_.vy[p];
+    const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
+    const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p], wk,
+                                                       Affine ? offset[0] : 0.0, Affine ? offset[1] : 0.0,
+                                                       grid_.hx, grid_.hy);
     const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
     const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
     const double sxx = sp[0], syy = sp[1], sxy = sp[3];
@@ -472,8 +498,8 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
         const double N = wx[a] * wy[b];
         if (mass_momentum) {
           gn[0] += m * N;
-          gn[1] += mvx * N;
-          gn[2] += mvy * N;
+          gn[1] += momentum.x(a, b, N);
+          gn[2] += momentum.y(a, b, N);
         }
         if (forces) {
           const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
@@ -570,13 +596,15 @@ void Engine::report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t
 }
 
 /// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
-/// FLIP v += dt sum N a, PIC v = sum N v_new, blended by pic_; x += dt sum N v_new.
+/// FLIP v += dt sum N a, PIC v = sum N v_new, blended (VelocityTransfer::particle_velocity); APIC
+/// (Affine) v = sum N v_new and B_p = sum N v_new (x_i - x_p)^T (Jiang et al. 2015); x += dt sum N v_new.
 /// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
 /// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
 /// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
 /// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
-/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass.
-template <class Shape>
+/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass (APIC: the particle's
+/// affine field, MomentumContribution at its old position, where B_p was just formed).
+template <class Shape, bool Affine>
 void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   constexpr int W = Shape::kWidth;
   const bool strain_increments = also == G2pAlso::StrainIncrements;
@@ -592,6 +620,14 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     const double* dwy = wx + 3 * W;
     double vgx = 0, vgy = 0, agx = 0, agy = 0;
     double lxx = 0, lyy = 0, lxy = 0, lyx = 0;
+    double B[4] = {0, 0, 0, 0};  // APIC: sum N v_new (x_i - x_p)^T
+    const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
+    double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
+    if constexpr (Affine)
+      for (int a = 0; a < W; ++a) {
+        dxs[a] = offset[0] + a * grid_.hx;
+        dys[a] = offset[1] + a * grid_.hy;
+      }
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
       const double* u = &updated_[4 * node_row];
@@ -599,8 +635,16 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         const double N = wx[a] * wy[b];
         vgx += N * u[0];
         vgy += N * u[1];
-        agx += N * u[2];
-        agy += N * u[3];
+        if constexpr (Affine) {
+          const double Nvx = N * u[0], Nvy = N * u[1];
+          B[0] += Nvx * dxs[a];
+          B[1] += Nvx * dys[b];
+          B[2] += Nvy * dxs[a];
+          B[3] += Nvy * dys[b];
+        } else {
+          agx += N * u[2];
+          agy += N * u[3];
+        }
         if (strain_increments) {
           const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
           lxx += dx * u[0];
@@ -616,24 +660,22 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
       de[1] = dt_ * lyy;
       de[2] = dt_ * (lxy + lyx);
     }
-    double vx = cur_.vx[p] + dt_ * agx, vy = cur_.vy[p] + dt_ * agy;
-    if (pic_ > 0.0) {
-      vx = (1.0 - pic_) * vx + pic_ * vgx;
-      vy = (1.0 - pic_) * vy + pic_ * vgy;
-    }
+    const double vx = transfer_.particle_velocity(cur_.vx[p], vgx, agx, dt_);
+    const double vy = transfer_.particle_velocity(cur_.vy[p], vgy, agy, dt_);
     const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
     nxt_.vx[k] = vx;
     nxt_.vy[k] = vy;
+    if constexpr (Affine) std::copy_n(B, 4, &nxt_.affine[4 * k]);
     if (remap_momentum) {
-      const double m = cur_.mass[p];
-      const double mvx = m * vx, mvy = m * vy;
+      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B, wx, Affine ? offset[0] : 0.0,
+                                                         Affine ? offset[1] : 0.0, grid_.hx, grid_.hy);
       double* band_row = g + local_[k];
       for (int b = 0; b < W; ++b, band_row += row_stride) {
         double* gn = band_row;
         for (int a = 0; a < W; ++a, gn += 5) {
           const double N = wx[a] * wy[b];
-          gn[1] += mvx * N;
-          gn[2] += mvy * N;
+          gn[1] += momentum.x(a, b, N);
+          gn[2] += momentum.y(a, b, N);
         }
       }
     }
@@ -889,6 +931,15 @@ void Engine::throw_first_error() const {
     case ProblemKind::None: os << " stress is not finite (sxx " << first->a << ", syy " << first->b << ")"; break;
   }
   throw common::NumericalError(os.str());
+}
+
+std::vector<std::array<double, 4>> Engine::affine_snapshot() const {
+  if (!transfer_.affine()) return {};
+  std::vector<std::uint32_t> by_id(order_.begin(), order_.end());
+  std::sort(by_id.begin(), by_id.end(), [&](std::uint32_t a, std::uint32_t b) { return cur_.id[a] < cur_.id[b]; });
+  std::vector<std::array<double, 4>> out(by_id.size());
+  for (std::size_t k = 0; k < by_id.size(); ++k) std::copy_n(&cur_.affine[4 * by_id[k]], 4, out[k].data());
+  return out;
 }
 
 std::vector<io::ParticleRecord> Engine::snapshot() const {

@@ -10,6 +10,7 @@
 // shared machine does not hold the others back), each chunk scatters lock-free into its own band of
 // grid rows, and the bands are summed in chunk order: results are bit-identical for ANY thread count.
 // Per-cell work (the cell remedies of stress_remedy.hpp) stays inside one chunk.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -18,6 +19,7 @@
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/stress_remedy.hpp"
+#include "mpm/core/velocity_transfer.hpp"
 #include "mpm/io/deck.hpp"
 #include "mpm/io/particle_table.hpp"
 
@@ -54,6 +56,7 @@ struct ParticleArrays {
   std::vector<double> stress;         ///< 4 per particle: sxx, syy, szz, sxy (one block: the material reads it whole)
   std::vector<double> exx, eyy, gxy, epsv;
   std::vector<double> svars;          ///< kStateVariables per particle
+  std::vector<double> affine;         ///< 4 per particle: the APIC matrix B_p (Bxx, Bxy, Byx, Byy), m^2/s
   std::vector<std::int64_t> key;      ///< lattice cell index (x fastest), or kRemoved
   void resize(std::size_t n);
 };
@@ -67,6 +70,8 @@ class Engine {
   double time() const { return static_cast<double>(step_index_) * dt_; }
   std::size_t particle_count() const { return order_.size(); }
   std::vector<io::ParticleRecord> snapshot() const;
+  /// The APIC matrices in snapshot() order (by id); empty unless the transfer is APIC.
+  std::vector<std::array<double, 4>> affine_snapshot() const;
 
   static constexpr std::int64_t kRemoved = -1;
 
@@ -88,13 +93,13 @@ class Engine {
   void for_each_chunk(F&& f);  ///< dynamic schedule over the chunks (no barrier at the end)
   template <class F>
   void for_each_row(F&& f);  ///< static schedule over the rows of the active node box (no barrier)
-  template <class Shape>
-  void p2g_chunk(std::size_t c, GridFields fields);
+  template <class Shape, bool Affine>
+  void p2g_chunk(std::size_t c, GridFields fields);  ///< Affine: the APIC momentum (velocity_transfer.hpp)
   void reduce_row(int j, GridFields summed);
   void nodal_velocity_row(int j);
   void integrate_row(int j);
-  template <class Shape>
-  void g2p_chunk(std::size_t c, G2pAlso also);
+  template <class Shape, bool Affine>
+  void g2p_chunk(std::size_t c, G2pAlso also);  ///< Affine: APIC (v_p, B_p from the grid)
   template <class Shape>
   void compute_strain_increments(std::size_t c);
   void apply_cell_remedy(std::size_t c);  ///< a cell remedy on each cell of chunk c
@@ -155,6 +160,7 @@ class Engine {
   std::vector<std::int32_t> local_;       ///< per iteration index: stencil's first node in the chunk's band
   std::vector<double> weights_;           ///< per iteration index: wx, wy, dwx/h, dwy/h (4 * width)
   std::vector<double> dstrain_;           ///< per iteration index: 3 (scratch for the stress update)
+  std::vector<double> stencil_offset_;    ///< APIC, per iteration index: first stencil node - particle (x, y), m
   std::vector<std::size_t> chunk_;        ///< chunks_ + 1 boundaries (iteration indices), at cell boundaries
   std::size_t chunks_ = 0;
   static constexpr std::size_t kChunkParticles = 2048;  ///< target chunk size
@@ -165,7 +171,7 @@ class Engine {
   std::vector<Material> materials_;
   bool uniform_material_ = true;
   io::Scheme scheme_ = io::Scheme::USF;
-  double pic_ = 0.0;  ///< PIC weight of the velocity update: 1 = PIC, 0 = FLIP
+  VelocityTransfer transfer_;  ///< FLIP, PIC, blend or APIC (velocity_transfer.hpp)
   bool locate_ = true;
   double damping_ = 0.0;
   double gx_ = 0, gy_ = 0;

@@ -15,5 +15,6 @@ double Simulation::time() const { return engine_->time(); }
 double Simulation::dt() const { return engine_->dt(); }
 std::size_t Simulation::particle_count() const { return engine_->particle_count(); }
 std::vector<io::ParticleRecord> Simulation::snapshot() const { return engine_->snapshot(); }
+std::vector<std::array<double, 4>> Simulation::affine_snapshot() const { return engine_->affine_snapshot(); }
 
 }  // namespace mpm::core

@@ -17,7 +17,8 @@
 // Semantics worth knowing (CB-Geo's where not stated):
 // - dt: analysis.dt, or with analysis.cfl > 0 the smaller of analysis.dt (if > 0) and cfl h / c_p,
 //   c_p = sqrt((K + 4G/3) / rho) of the stiffest material; fixed for the run.
-// - analysis.pic_blend in [0, 1] blends the FLIP and PIC velocity updates; velocity_update = true is PIC.
+// - analysis.transfer: FLIP (velocity_update false), PIC (velocity_update true), or APIC; pic_blend in
+//   [0, 1] blends the FLIP and PIC velocity updates (velocity_transfer.hpp).
 // - analysis.stress_smoothing: "none", "cell_volumetric" (cell-mean volumetric strain increment),
 //   "cell_strain" (cell-mean strain increment plus 0.1 of the deviatoric deviation: the remedy to use),
 //   "nodal_strain" (mass-weighted nodal smoothing of the strain increment) or "nodal_volumetric"
@@ -29,6 +30,8 @@
 //   CB-Geo's invariant state variables (epsilon, rho, theta) are computed from the stress at snapshot.
 // - USL drops the internal force of nodes lighter than 2 % of a full node (engine.hpp small_mass_): particles
 //   entering empty cells (vanishing nodal mass; Sulsky, Zhou & Schreyer 1995) no longer run away.
+// - APIC on linear (ED2Q4) cells can run away where particles enter empty cells: use uGIMP cells with APIC.
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -66,6 +69,9 @@ class Simulation {
   std::size_t particle_count() const;
   /// Full particle state in CB-Geo's record form, sorted by particle id (exact doubles).
   std::vector<io::ParticleRecord> snapshot() const;
+  /// The APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s) in snapshot() order; empty unless the
+  /// transfer is APIC. Written beside the particle table so that a resumed run continues bit for bit.
+  std::vector<std::array<double, 4>> affine_snapshot() const;
 
  private:
   std::unique_ptr<Engine> engine_;

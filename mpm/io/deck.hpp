@@ -3,6 +3,7 @@
 // sets, stresses, or the resume HDF5 file) and what mpm/core builds a simulation from. Plain data, SI
 // units, angles in radians, everything already validated by the reader (the core only asserts).
 #include <Eigen/Core>
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@ namespace mpm::io {
 
 enum class CellType { Linear4 /* ED2Q4 */, Gimp16 /* ED2Q16G */ };
 enum class Scheme { USF, USL, MUSL };
+/// The particle-grid velocity transfer (analysis.transfer; mpm/core/velocity_transfer.hpp).
+enum class Transfer { FLIP, PIC, APIC };
 
 /// A uniform rectangular node lattice. Node (i, j) sits at (x0 + i*hx, y0 + j*hy) and has index
 /// i + j*nodes_x. For GIMP decks the lattice includes CB-Geo's halo ring of nodes.
@@ -59,8 +62,9 @@ struct MaterialSpec {
 
 struct Analysis {
   Scheme scheme = Scheme::USF;
-  bool velocity_update = false;  ///< true: PIC (CB-Geo), false: FLIP
-  double pic_blend = 0.0;        ///< extension: 0 = pure FLIP, 1 = pure PIC
+  bool velocity_update = false;  ///< true: PIC (CB-Geo), false: FLIP (kept consistent with `transfer`)
+  Transfer transfer = Transfer::FLIP;  ///< extension analysis.transfer ("flip", "pic", "apic")
+  double pic_blend = 0.0;        ///< extension: FLIP only; 0 = pure FLIP, 1 = pure PIC
   bool locate_particles = true;  ///< true: a particle leaving the grid is an error; false: it is removed
   double dt = 0;                 ///< s; with cfl > 0 the engine chooses dt and this is the upper bound
   double cfl = 0;                ///< extension: automatic dt = cfl * h / c_p when > 0
@@ -90,10 +94,14 @@ struct Deck {
   /// Initial particles. Records with volume <= 0 get CB-Geo's defaults from the engine: volume = cell
   /// area / particles in that cell, mass = density * volume, nsize = 2 / sqrt(particles in the cell).
   std::vector<ParticleRecord> particles;
+  /// APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s), one per particle in `particles` order; empty:
+  /// all zero (a fresh start, or a resume file without the dataset).
+  std::vector<std::array<double, 4>> particle_affine;
   Analysis analysis;
   Output output;
   bool resumed = false;         ///< particles came from a resume file
   long long first_step = 0;     ///< the first loop step to run (resume step + 1 when resumed)
+  std::vector<std::string> warnings;  ///< things the reader accepted but the user should know (printed by main)
 };
 
 }  // namespace mpm::io

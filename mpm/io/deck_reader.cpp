@@ -17,6 +17,7 @@
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
 #include "mpm/io/output_keys.hpp"
+#include "mpm/io/transfer_keys.hpp"
 
 namespace mpm::io {
 namespace fs = std::filesystem;
@@ -149,7 +150,7 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
   else if (scheme == "usl") an.scheme = Scheme::USL;
   else if (scheme == "musl") an.scheme = Scheme::MUSL;
   else a.fail(scheme_key, "unknown scheme \"" + scheme + "\" (expected usf, usl or musl)");
-  an.velocity_update = a.boolean_or("velocity_update", false);
+  read_velocity_transfer(a, an);
   an.locate_particles = a.boolean_or("locate_particles", true);
   // Extension: with cfl > 0 the engine picks dt = cfl h / c_p, and dt (optional then) is its upper bound.
   an.cfl = a.number_or("cfl", 0.0);
@@ -186,10 +187,6 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
     if (!nlb->is_number_integer() || nlb->get<long long>() <= 0)
       a.fail("nload_balance_steps", "expected an integer > 0 (MPI load balancing; no effect here)");
   // Extensions (mpm/README.md).
-  an.pic_blend = a.number_or("pic_blend", an.velocity_update ? 1.0 : 0.0);
-  if (!(an.pic_blend >= 0 && an.pic_blend <= 1)) a.fail("pic_blend", "expected a number in [0, 1], got " + num(an.pic_blend));
-  if (an.velocity_update && an.pic_blend != 1.0)
-    a.fail("pic_blend", "velocity_update true means pure PIC; give pic_blend only with velocity_update false");
   an.stress_smoothing = a.string_or("stress_smoothing", "none");
   const auto& methods = stress_smoothing_methods();
   if (std::find(methods.begin(), methods.end(), an.stress_smoothing) == methods.end()) {
@@ -404,6 +401,23 @@ void check_no_duplicates(const std::vector<ParticleRecord>& ps, const std::strin
                                           num(keyed[k].first.first) + ", " + num(keyed[k].first.second) + ")");
 }
 
+/// Sorts deck.particles by id, and deck.particle_affine (when given) with them.
+void sort_by_id(Deck& deck) {
+  std::vector<std::size_t> order(deck.particles.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return deck.particles[a].id < deck.particles[b].id; });
+  std::vector<ParticleRecord> particles;
+  particles.reserve(order.size());
+  for (std::size_t k : order) particles.push_back(deck.particles[k]);
+  deck.particles = std::move(particles);
+  if (deck.particle_affine.empty()) return;
+  std::vector<std::array<double, 4>> affine;
+  affine.reserve(order.size());
+  for (std::size_t k : order) affine.push_back(deck.particle_affine[k]);
+  deck.particle_affine = std::move(affine);
+}
+
 }  // namespace
 
 Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
@@ -525,7 +539,8 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
       if (!(p.mass > 0) || !(p.volume > 0))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": mass and volume must be > 0");
     }
-    std::sort(deck.particles.begin(), deck.particles.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+    read_resume_affine(file, rshown, deck);
+    sort_by_id(deck);
     for (std::size_t k = 1; k < deck.particles.size(); ++k)
       if (deck.particles[k].id == deck.particles[k - 1].id)
         throw common::InputError(rshown, "particle id " + std::to_string(deck.particles[k].id) + " appears twice");

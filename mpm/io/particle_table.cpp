@@ -209,6 +209,40 @@ std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& fil
   return records;
 }
 
+void write_affine_dataset(std::int64_t file_id, std::span<const std::array<double, 4>> affine, const std::string& shown) {
+  QuietHdf5 quiet;
+  const hsize_t dims[2] = {static_cast<hsize_t>(affine.size()), 4};
+  Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
+  Handle dset(H5Dcreate2(static_cast<hid_t>(file_id), kAffineDataset, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                         H5P_DEFAULT, H5P_DEFAULT),
+              H5Dclose);
+  if (!dset.valid() || (!affine.empty() && H5Dwrite(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                                    affine.data()) < 0))
+    throw std::runtime_error(shown + ": writing the /" + std::string(kAffineDataset) + " dataset failed");
+}
+
+std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
+                                                                      std::size_t rows) {
+  QuietHdf5 quiet;
+  Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!h5.valid()) throw common::InputError(file.string(), "not a readable HDF5 file");
+  if (H5Lexists(h5.get(), kAffineDataset, H5P_DEFAULT) <= 0) return std::nullopt;
+  const std::string what = "dataset \"/" + std::string(kAffineDataset) + "\"";
+  Handle dset(H5Dopen2(h5.get(), kAffineDataset, H5P_DEFAULT), H5Dclose);
+  if (!dset.valid()) throw common::InputError(file.string(), what + " cannot be opened");
+  Handle ftype(H5Dget_type(dset.get()), H5Tclose);
+  Handle space(H5Dget_space(dset.get()), H5Sclose);
+  hsize_t dims[2] = {0, 0};
+  if (H5Tget_class(ftype.get()) != H5T_FLOAT || H5Sget_simple_extent_ndims(space.get()) != 2 ||
+      H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 || dims[0] != rows || dims[1] != 4)
+    throw common::InputError(file.string(), what + " must be " + std::to_string(rows) +
+                                                " x 4 floats (one row per particle of /table)");
+  std::vector<std::array<double, 4>> affine(rows);
+  if (rows > 0 && H5Dread(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, affine.data()) < 0)
+    throw common::InputError(file.string(), "reading " + what + " failed (truncated or corrupt file?)");
+  return affine;
+}
+
 std::string particle_file_name(long long step, long long nsteps) {
   const int digits = nsteps > 0 ? static_cast<int>(std::log10(static_cast<double>(nsteps))) + 1 : 1;
   char buffer[64];

@@ -2,10 +2,12 @@
 // CB-Geo MPM's particle HDF5 table ("/table", 53 members, 416-byte records), defined once for the
 // writer (fem2mpm, mpm) and the reader (mpm resume). Schema: ../shared/FORMATS.md section 4, read
 // from CB-Geo's include/hdf5_particle.h. SI units, tension positive, engineering shear strains.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -54,6 +56,20 @@ void write_particle_table(const std::filesystem::path& file, std::span<const Par
 /// names (members are matched by name, so member order in the file does not matter).
 /// Throws common::InputError naming the file and the missing member or the problem.
 std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& file);
+
+/// The APIC affine matrices beside "/table" (this project's extension; CB-Geo's reader opens "/table" only):
+/// a 2-D float64 dataset of rows x 4 columns, B_xx B_xy B_yx B_yy per particle (m^2/s), row k for
+/// particle k of "/table".
+inline constexpr const char* kAffineDataset = "apic_affine";
+
+/// Writes kAffineDataset into the open HDF5 file `file_id` (an hid_t, e.g. from write_particle_table's
+/// add_datasets). Throws std::runtime_error naming `shown` on failure.
+void write_affine_dataset(std::int64_t file_id, std::span<const std::array<double, 4>> affine, const std::string& shown);
+
+/// Reads kAffineDataset from `file`: std::nullopt when the file has none; common::InputError naming the
+/// file when it is not `rows` x 4 float64 or cannot be read.
+std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
+                                                                      std::size_t rows);
 
 /// CB-Geo's output name for `step` of a run of `nsteps` steps: "particles" + step zero-padded to
 /// int(log10(nsteps)) + 1 digits + ".h5" (e.g. step 250 of 1001 -> "particles0250.h5").

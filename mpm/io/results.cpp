@@ -260,17 +260,20 @@ void ResultsWriter::write_start(double time, std::span<const ParticleRecord> par
   add_frame(frame, particles);
 }
 
-void ResultsWriter::write_particles(long long step, double time, std::span<const ParticleRecord> particles) {
+void ResultsWriter::write_particles(long long step, double time, std::span<const ParticleRecord> particles,
+                                    std::span<const std::array<double, 4>> affine) {
   const fs::path file = particle_file(step);
   write_particle_table(file, particles, [&](std::int64_t id) {
     write_xdmf_datasets(static_cast<hid_t>(id), particles, deck_.grid, file.string());
+    if (!affine.empty()) write_affine_dataset(id, affine, file.string());
   });
   add_frame({step, time, particles.size(), file.filename().string()}, particles);
 }
 
-void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles) {
+void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
+                                 std::span<const std::array<double, 4>> affine) {
   prepare();
-  write_particles(step, time, particles);
+  write_particles(step, time, particles, affine);
   add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
   write_series();
 }
@@ -281,9 +284,10 @@ void ResultsWriter::write_series_row(long long step, double time, double dt, std
   write_series();
 }
 
-fs::path ResultsWriter::write_state(long long step, double time, std::span<const ParticleRecord> particles) {
+fs::path ResultsWriter::write_state(long long step, double time, std::span<const ParticleRecord> particles,
+                                   std::span<const std::array<double, 4>> affine) {
   prepare();
-  write_particles(step, time, particles);
+  write_particles(step, time, particles, affine);
   return particle_file(step);
 }
 

@@ -46,7 +46,8 @@ T_TOTAL = 20.0          # s, every MPM run ends at this TOTAL time (FEM time + M
 FEM_TEND = 5.0
 CFL = 0.5
 SCHEME = "musl"
-PIC_BLEND = 0.0
+PIC_BLEND = 0.0         # FLIP only
+TRANSFER = "apic"       # velocity transfer of every MPM run ("flip", "pic", "apic"): docs/study/transfer_comparison.md
 
 
 class Scene:
@@ -97,7 +98,9 @@ def tune_deck(deck_path, smoothing="none"):
     def edit(deck):
         a = deck["analysis"]
         a["cfl"] = CFL
-        a["pic_blend"] = PIC_BLEND
+        a.pop("velocity_update", None)
+        a.pop("pic_blend", None)
+        a.update(transfer_keys(TRANSFER, PIC_BLEND))
         a["stress_smoothing"] = smoothing
     pipeline.edit_deck(deck_path, edit)
 
@@ -132,7 +135,13 @@ def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads):
             "results": os.path.join(d, "results", "column")}
 
 
-def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None, pic_blend=PIC_BLEND):
+def transfer_keys(transfer, pic_blend):
+    """analysis keys of a velocity transfer: "flip" (with pic_blend), "pic" or "apic" (mpm/README.md)."""
+    return {"transfer": transfer, "pic_blend": pic_blend} if transfer == "flip" else {"transfer": transfer}
+
+
+def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None, pic_blend=PIC_BLEND,
+                        transfer=TRANSFER):
     """MPM only: particles on the MPM grid (ppd x ppd per cell, at the centres of equal sub-cells), K0
     elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v."""
     os.makedirs(d, exist_ok=True)
@@ -189,10 +198,10 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
                        "peak_pdstrain": 0.0, "residual_pdstrain": 0.0,
                        "tension_cutoff": COHESION / math.tan(math.radians(PHI)), "softening": False}],
         "external_loading_conditions": {"gravity": [0.0, -G]},
-        "analysis": {"type": "MPMExplicit2D", "mpm_scheme": SCHEME, "velocity_update": False, "locate_particles": True,
-                     "dt": dt, "cfl": CFL, "pic_blend": pic_blend, "stress_smoothing": smoothing,
-                     "nsteps": nsteps, "uuid": "column",
-                     "damping": {"type": "Cundall", "damping_factor": 0.0}},
+        "analysis": dict({"type": "MPMExplicit2D", "mpm_scheme": SCHEME, "locate_particles": True,
+                          "dt": dt, "cfl": CFL, "stress_smoothing": smoothing,
+                          "nsteps": nsteps, "uuid": "column",
+                          "damping": {"type": "Cundall", "damping_factor": 0.0}}, **transfer_keys(transfer, pic_blend)),
         "post_processing": {"path": "results/", "output_steps": max(1, int(round(out_every / dt)))},
     }
     with open(os.path.join(d, "mpm.json"), "w") as f:
@@ -200,11 +209,11 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
 
 
 def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None,
-                 pic_blend=PIC_BLEND):
+                 pic_blend=PIC_BLEND, transfer=TRANSFER):
     d = os.path.join(out, name)
     if os.path.isdir(d):
         shutil.rmtree(d)
-    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend)
+    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer)
     w = pipeline.run_mpm(bins, d, threads)
     with open(os.path.join(d, "wall.txt"), "w") as f:
         f.write("%.3f\n" % w)
@@ -494,7 +503,8 @@ def sweep_one(bins, out, a, cell, ppd):
         return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a)
     except RuntimeError as e:
         log("sweep a = %g failed (%s); again with a %g PIC blend" % (a, str(e).splitlines()[-1][:160], SWEEP_RETRY_PIC_BLEND))
-        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a, pic_blend=SWEEP_RETRY_PIC_BLEND)
+        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a, pic_blend=SWEEP_RETRY_PIC_BLEND,
+                            transfer="flip")
 
 
 def collect_sweep(out, cell, ppd):

@@ -32,13 +32,16 @@ std::size_t line_count(const std::string& s) { return static_cast<std::size_t>(s
 
 /// Runs the uninterrupted deck in folder A, then in folder B resumes from A's output at `resume_step`
 /// and checks that every later output and series.csv are identical.
+/// `analysis` keys are set in both decks (e.g. the transfer); with APIC the affine matrices beside the
+/// tables must be identical too.
 void check_resume(const std::string& name, const std::string& uuid, long long nsteps, long long every, long long resume_step,
-                  const std::string& threads) {
+                  const std::string& threads, const json& analysis = json::object()) {
   const fs::path a = copy_case(name, name + "_full"), b = copy_case(name, name + "_resumed");
   for (const fs::path& d : {a, b}) {
     json deck = load(d / "mpm.json");
     deck["analysis"]["nsteps"] = nsteps;
     deck["post_processing"]["output_steps"] = every;
+    for (const auto& [k, v] : analysis.items()) deck["analysis"][k] = v;
     save(d / "mpm.json", deck);
   }
   const auto full = run_mpm(a, "mpm.json", threads);
@@ -52,8 +55,17 @@ void check_resume(const std::string& name, const std::string& uuid, long long ns
   save(b / "mpm.json", deck);
   const auto resumed = run_mpm(b, "mpm.json", threads);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  for (long long s = resume_step + every; s < nsteps; s += every)
-    expect_identical_tables(ra / mpm::io::particle_file_name(s, nsteps), rb / mpm::io::particle_file_name(s, nsteps));
+  EXPECT_EQ(resumed.err.find("warning"), std::string::npos) << resumed.err;
+  const bool apic = analysis.value("transfer", "") == "apic";
+  for (long long s = resume_step + every; s < nsteps; s += every) {
+    const auto fa = ra / mpm::io::particle_file_name(s, nsteps), fb = rb / mpm::io::particle_file_name(s, nsteps);
+    expect_identical_tables(fa, fb);
+    const auto affine_a = mpm::io::read_affine_dataset(fa, mpm::io::read_particle_table(fa).size());
+    EXPECT_EQ(affine_a.has_value(), apic) << fa;
+    if (affine_a) {
+      EXPECT_TRUE(*affine_a == *mpm::io::read_affine_dataset(fb, affine_a->size())) << fb;
+    }
+  }
   EXPECT_EQ(file_text(ra / "series.csv"), file_text(rb / "series.csv"));
 }
 
@@ -68,6 +80,32 @@ TEST(MpmResume, MohrCoulombGimpColumnContinuesBitForBit) {
   // The column deck cut to 1001 steps: GIMP, K0 stresses, Mohr-Coulomb state variables, friction;
   // 2 threads in both runs.
   check_resume("mc_column_gimp_short", "mc_column", 1001, 100, 400, "--threads 2");
+}
+
+TEST(MpmResume, ApicGimpColumnContinuesBitForBit) {
+  // As above with the APIC transfer: the affine matrices travel in /apic_affine beside /table.
+  check_resume("mc_column_gimp_short", "mc_column", 601, 100, 300, "--threads 2", {{"transfer", "apic"}});
+}
+
+TEST(MpmResume, ApicFromAFileWithoutMatricesWarnsAndStartsFromZero) {
+  // A CB-Geo or FLIP particle file has no /apic_affine: an APIC run resumes from zero matrices and says so.
+  const fs::path dir = copy_case("elastic_block_drop", "apic_from_flip");
+  json deck = load(dir / "mpm.json");
+  deck["analysis"]["nsteps"] = 41;
+  deck["post_processing"]["output_steps"] = 20;
+  save(dir / "mpm.json", deck);
+  ASSERT_EQ(run_mpm(dir, "mpm.json", "--threads 1").exit_code, 0);
+  deck["analysis"]["transfer"] = "apic";
+  deck["analysis"].erase("velocity_update");
+  deck["analysis"]["resume"] = {{"resume", true}, {"uuid", "block_drop"}, {"step", 20}};
+  save(dir / "mpm.json", deck);
+  const auto r = run_mpm(dir, "mpm.json", "--threads 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("mpm: warning: results/block_drop/particles20.h5 has no /apic_affine dataset"), std::string::npos)
+      << r.err;
+  const fs::path last = dir / "results/block_drop" / mpm::io::particle_file_name(40, 41);
+  EXPECT_TRUE(mpm::io::read_affine_dataset(last, mpm::io::read_particle_table(last).size()).has_value());
 }
 
 struct BadDeck {

@@ -88,9 +88,13 @@ TEST(MpmDeck, GimpGridMatchesCbGeoReferenceDeck) {
   EXPECT_EQ(d.particle_file, "results/column/particles0000.h5");  // 5001 steps -> 4 digits
   EXPECT_EQ(deck["materials"][0]["type"], "MohrCoulomb2D");
   EXPECT_CLOSE(deck["materials"][0]["friction"].get<double>(), 30.0, 1e-12, 0);
-  // Every key of our deck exists in the CB-Geo reference deck (same schema), except none.
+  // The velocity transfer: APIC by default (an extension key; CB-Geo reads velocity_update false = FLIP).
+  EXPECT_EQ(deck["analysis"]["transfer"], "apic");
+  EXPECT_EQ(deck["analysis"]["velocity_update"], false);
+  // Every key of our deck exists in the CB-Geo reference deck (same schema), except analysis.transfer.
   for (const auto& [key, value] : deck.items()) EXPECT_TRUE(ref_json.contains(key)) << key;
-  for (const auto& [key, value] : deck["analysis"].items()) EXPECT_TRUE(ref_json["analysis"].contains(key)) << key;
+  for (const auto& [key, value] : deck["analysis"].items())
+    EXPECT_TRUE(ref_json["analysis"].contains(key) || key == "transfer") << key;
   for (const auto& [key, value] : deck["mesh"].items()) EXPECT_TRUE(ref_json["mesh"].contains(key)) << key;
 }
 

@@ -410,6 +410,43 @@ TEST(DeckReader, Extensions) {
   EXPECT_MESSAGE_HAS(n.error(), "analysis.dt: missing");
 }
 
+TEST(DeckReader, VelocityTransferKeys) {
+  // analysis.transfer ("flip", "pic", "apic") and CB-Geo's velocity_update (true = PIC) decide together.
+  const std::vector<std::pair<json, mpm::io::Transfer>> accepted = {
+      {json::object(), mpm::io::Transfer::FLIP},
+      {{{"velocity_update", true}}, mpm::io::Transfer::PIC},
+      {{{"transfer", "apic"}}, mpm::io::Transfer::APIC},
+      {{{"transfer", "apic"}, {"velocity_update", false}}, mpm::io::Transfer::APIC},
+      {{{"transfer", "pic"}, {"velocity_update", true}}, mpm::io::Transfer::PIC},
+      {{{"transfer", "pic"}}, mpm::io::Transfer::PIC},
+      {{{"transfer", "flip"}, {"pic_blend", 0.02}}, mpm::io::Transfer::FLIP},
+  };
+  for (const auto& [keys, transfer] : accepted) {
+    SCOPED_TRACE(keys.dump());
+    SmallDeck d("transfer");
+    d.deck["analysis"].erase("velocity_update");
+    for (const auto& [k, v] : keys.items()) d.deck["analysis"][k] = v;
+    const auto deck = d.read();
+    EXPECT_EQ(deck.analysis.transfer, transfer);
+    EXPECT_EQ(deck.analysis.velocity_update, transfer == mpm::io::Transfer::PIC);
+    EXPECT_EQ(deck.analysis.pic_blend, transfer == mpm::io::Transfer::PIC ? 1.0 : keys.value("pic_blend", 0.0));
+  }
+  const std::vector<std::pair<json, std::string>> refused = {
+      {{{"transfer", "apic"}, {"velocity_update", true}}, "analysis.transfer: \"apic\" contradicts velocity_update true"},
+      {{{"transfer", "pic"}, {"velocity_update", false}}, "analysis.transfer: \"pic\" contradicts velocity_update false"},
+      {{{"transfer", "APIC"}}, "analysis.transfer: unknown transfer \"APIC\" (expected flip, pic or apic)"},
+      {{{"transfer", "apic"}, {"pic_blend", 0.02}}, "analysis.pic_blend: blends FLIP with PIC and applies to the flip transfer only"},
+      {{{"transfer", "pic"}, {"pic_blend", 1.0}}, "analysis.pic_blend: blends FLIP with PIC"},
+      {{{"pic_blend", 1.5}}, "analysis.pic_blend: expected a number in [0, 1], got 1.5"},
+  };
+  for (const auto& [keys, message] : refused) {
+    SmallDeck d("transfer_error");
+    d.deck["analysis"].erase("velocity_update");
+    for (const auto& [k, v] : keys.items()) d.deck["analysis"][k] = v;
+    EXPECT_MESSAGE_HAS(d.error(), message);
+  }
+}
+
 TEST(DeckReader, GeneratedGimpGridWithNamedBoundarySets) {
   SmallDeck d("generated");
   d.deck["mesh"] = json::parse(R"({

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -41,6 +42,31 @@ TEST(ParticleTable, RoundTripKeepsEveryMember) {
     EXPECT_EQ(out[i].nstate_vars, in[i].nstate_vars);
     EXPECT_EQ(out[i].svars[19], in[i].svars[19]);
   }
+}
+
+TEST(ParticleTable, AffineDatasetBesideTheTableRoundTripsExactly) {
+  // APIC's B_p rows next to /table; /table keeps CB-Geo's 53 members (CB-Geo reads it alone).
+  std::vector<ParticleRecord> in(2);
+  in[1].id = 1;
+  const std::vector<std::array<double, 4>> affine = {{{0.1, -2.5e-17, 3.0, 1.0 / 3.0}}, {{-1e300, 0.0, -0.0, 7.0}}};
+  const test_support::ScratchDir dir("geoflow_particle_table_affine");
+  const auto file = dir.path() / "affine.h5";
+  mpm::io::write_particle_table(file, in, [&](std::int64_t h5) { mpm::io::write_affine_dataset(h5, affine, "affine.h5"); });
+  EXPECT_EQ(mpm::io::read_particle_table(file).size(), 2u);
+  const auto back = mpm::io::read_affine_dataset(file, 2);
+  ASSERT_TRUE(back.has_value());
+  ASSERT_EQ(back->size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_EQ(std::memcmp((*back)[k].data(), affine[k].data(), sizeof affine[k]), 0) << "row " << k;
+  try {
+    mpm::io::read_affine_dataset(file, 3);
+    ADD_FAILURE() << "a row count that differs from /table must be refused";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dataset \"/apic_affine\" must be 3 x 4 floats"), std::string::npos) << e.what();
+  }
+  const auto plain = dir.path() / "plain.h5";
+  mpm::io::write_particle_table(plain, in);
+  EXPECT_FALSE(mpm::io::read_affine_dataset(plain, 2).has_value());
 }
 
 TEST(ParticleTable, ReadsTheResumeFileOfTheCbGeoReferenceDeck) {

@@ -1,0 +1,117 @@
+#pragma once
+// The particle-grid velocity transfers (analysis.transfer): what p2g adds to the nodal momentum and what
+// g2p hands back to the particle.
+//
+// FLIP / PIC / blend (Brackbill & Ruppel 1986; Sulsky, Chen & Schreyer 1994, eqs. 21-22):
+//   p2g  m_i v_i = sum_p w_ip m_p v_p
+//   g2p  v_p <- (1 - b) (v_p + dt sum_i w_ip a_i) + b sum_i w_ip v_i^new      (b = 0 FLIP, 1 PIC)
+// APIC (Jiang, Schroeder, Selle, Teran & Stomakhin 2015, "The affine particle-in-cell method", ACM TOG
+// 34(4) 51, the transfers and D_p around their eq. 11; for general weights Jiang, Schroeder & Teran 2017,
+// "An angular momentum conserving affine-particle-in-cell method", JCP 338):
+//   p2g  m_i v_i = sum_p w_ip m_p (v_p + B_p D_p^-1 (x_i - x_p)),  D_p = sum_i w_ip (x_i - x_p)(x_i - x_p)^T
+//   g2p  v_p <- sum_i w_ip v_i^new,  B_p <- sum_i w_ip v_i^new (x_i - x_p)^T   (x_p before the move)
+// B_p is the particle's stored affine matrix; D_p (the "inertia-like tensor") is computed afresh at every
+// p2g from the particle's current weights, as both papers do for weights whose D_p is not constant.
+// With D_p computed this way both transfers conserve linear and angular momentum exactly (the proofs of
+// both papers: the particle's angular momentum x_p x m_p v_p + m_p eps : B_p^T maps to sum_i x_i x m_i v_i,
+// and back), for ANY weights with partition of unity and linear reproduction (sum_i w_ip x_i = x_p).
+//
+// Tensor-product weights w_ip = wx_a(x_p) wy_b(y_p) with those two properties per axis make D_p
+// diagonal: D_xx = sum_a wx_a (x_a - x_p)^2 (the off-diagonal sum_a wx_a (x_a - x_p) sum_b wy_b (y_b - y_p)
+// is zero), so w_ip D_p^-1 (x_i - x_p) = (ax_a wy_b, wx_a ay_b) with the per-axis affine weights
+// ax_a = wx_a (x_a - x_p) / D_xx (affine_axis_weights below):
+//   - uGIMP (Bardenhagen & Kober 2004): D_xx >= lp h / 2 > 0 (its minimum, with the particle on a node),
+//     so the division is safe; D_xx is NOT the constant h^2/4 of quadratic B-splines.
+//   - bilinear: ax_a = dwx_a / dx exactly (1D, nodes at 0 and h, particle at x: D = x (h - x), and
+//     w_0 (0 - x) / D = -1/h = dw_0/dx), the identity APIC 2015 notes for multilinear weights;
+//     the gradient form stays finite where D_p is singular (a particle on a grid line).
+// Constrained nodes: g2p reads the constrained (and frictional) updated nodal velocity, so v_p and B_p
+// both see the boundary velocity, and MUSL's remap (p2g of the updated particle field) maps the same
+// affine field back before the constraints are applied again.
+#include <cstddef>
+
+#include "mpm/core/shape_functions.hpp"
+#include "mpm/io/deck.hpp"
+
+namespace mpm::core {
+
+/// The transfer of one run.
+struct VelocityTransfer {
+  io::Transfer kind = io::Transfer::FLIP;
+  double pic = 0.0;  ///< FLIP blend: PIC weight b (1 for PIC, 0 for pure FLIP); unused by APIC
+
+  /// From the analysis block: transfer, velocity_update (true = PIC) and pic_blend. Throws
+  /// common::InputError when they contradict each other (a deck built in code; the deck reader
+  /// already refuses such JSON) or when pic_blend is outside [0, 1].
+  static VelocityTransfer from(const io::Analysis& analysis);
+
+  bool affine() const { return kind == io::Transfer::APIC; }
+
+  /// The velocity component g2p hands back, from the particle's old velocity, the interpolated updated
+  /// grid velocity sum w v_i^new and the interpolated grid acceleration sum w a_i.
+  double particle_velocity(double v_old, double v_grid, double a_grid, double dt) const {
+    if (kind == io::Transfer::APIC) return v_grid;
+    const double flip = v_old + dt * a_grid;
+    return pic > 0.0 ? (1.0 - pic) * flip + pic * v_grid : flip;
+  }
+};
+
+/// APIC per-axis affine weights a[k] = w[k] d_k / D with d_k = d0 + k h the signed distance node minus
+/// particle (m) and D = sum_k w[k] d_k^2 (the axis's entry of D_p). uGIMP: from the weights.
+inline void affine_axis_weights(GimpShape, const double* w, const double* /*dw*/, double d0, double h, double* a) {
+  constexpr int W = GimpShape::kWidth;
+  double D = 0.0;
+  for (int k = 0; k < W; ++k) {
+    const double d = d0 + k * h;
+    D += w[k] * d * d;
+  }
+  const double inv_D = 1.0 / D;
+  for (int k = 0; k < W; ++k) a[k] = w[k] * (d0 + k * h) * inv_D;
+}
+
+/// Bilinear: the gradient dw (per metre), equal to w d / D wherever D > 0 (see the file comment).
+inline void affine_axis_weights(LinearShape, const double* /*w*/, const double* dw, double /*d0*/, double /*h*/,
+                                double* a) {
+  for (int k = 0; k < LinearShape::kWidth; ++k) a[k] = dw[k];
+}
+
+/// What one particle adds to the momentum of node (a, b) of its stencil (weight N = wx_a wy_b):
+/// m_p N v_p, and with APIC (Affine) also m_p B_p (ax_a wy_b, wx_a ay_b) = m_p N B_p D_p^-1 (x_i - x_p).
+/// Built once per particle per p2g (and per MUSL remap) from its weights at its current position.
+template <class Shape, bool Affine>
+struct MomentumContribution {
+  static constexpr int W = Shape::kWidth;
+  double mvx = 0, mvy = 0;
+  /// m_p B_p times the per-axis affine weights (affine_axis_weights): xx ax_a, xy ay_b, yx ax_a, yy ay_b
+  double bxx[W] = {}, bxy[W] = {}, byx[W] = {}, byy[W] = {};
+  const double* wx = nullptr;
+  const double* wy = nullptr;
+
+  /// `w` = the particle's stored weights (wx, wy, dwx, dwy; W each, gradients per metre), `B` its
+  /// matrix (read only when Affine), (ox, oy) = first stencil node minus particle, m.
+  MomentumContribution(double m, double vx, double vy, const double* B, const double* w, double ox, double oy,
+                       double hx, double hy)
+      : mvx(m * vx), mvy(m * vy), wx(w), wy(w + W) {
+    if constexpr (Affine) {
+      double ax[W], ay[W];
+      affine_axis_weights(Shape{}, w, w + 2 * W, ox, hx, ax);
+      affine_axis_weights(Shape{}, w + W, w + 3 * W, oy, hy, ay);
+      for (int k = 0; k < W; ++k) {
+        bxx[k] = m * B[0] * ax[k];
+        bxy[k] = m * B[1] * ay[k];
+        byx[k] = m * B[2] * ax[k];
+        byy[k] = m * B[3] * ay[k];
+      }
+    }
+  }
+  double x(int a, int b, double N) const {
+    if constexpr (Affine) return mvx * N + bxx[a] * wy[b] + bxy[b] * wx[a];
+    return mvx * N;
+  }
+  double y(int a, int b, double N) const {
+    if constexpr (Affine) return mvy * N + byx[a] * wy[b] + byy[b] * wx[a];
+    return mvy * N;
+  }
+};
+
+}  // namespace mpm::core

@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""FLIP, PIC, a 2 % PIC blend and APIC side by side on MPM-only column collapses (issue 10 item 3).
+
+    scripts/column_collapse/transfer_study.py [--out DIR] [--jobs N] [--aspect 3,0.8] [--transfers flip,pic,blend,apic]
+                                              [--halved apic] [--tau 7]
+
+Each run: the paper's soil (study.py), GIMP cells of 1 m (and 0.5 m for --halved transfers), 4 x 4 particles
+per cell, MUSL, CFL 0.5, base friction tan(phi), to t = --tau * tau_c (tau_c = sqrt(H0 / g)). Columns:
+a = 3 is 10 m x 30 m, a = 0.8 the paper's 50 m x 40 m. Per run: runout (L - L0)/L0 and PE/PE0 at the end, the
+largest particle speed and KE/PE0 at the end, the time (t/tau_c) after which the run stays at rest
+(max speed < 0.05 m/s and KE/PE0 < 1e-5), and the wall time per step (on whatever machine ran it). Writes
+summary.md (a Markdown table) and summary.json to --out.
+"""
+import argparse
+import concurrent.futures
+import json
+import os
+import sys
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import study  # noqa: E402
+
+TRANSFERS = {"flip": ("flip", 0.0), "pic": ("pic", 0.0), "blend": ("flip", 0.02), "apic": ("apic", 0.0)}
+LABELS = {"flip": "FLIP", "pic": "PIC", "blend": "FLIP + 2 % PIC", "apic": "APIC"}
+COLUMNS = {3.0: (10.0, 30.0), 0.8: (50.0, 40.0)}
+REST_SPEED, REST_KE = 0.05, 1e-5
+
+
+def run_one(bins, out, a, key, cell, tau):
+    width, height = COLUMNS[a]
+    scene = study.Scene(width, height, cell, 4, out_every=0.1)
+    transfer, blend = TRANSFERS[key]
+    name = "a%g_%s_h%g" % (a, key, cell)
+    t0 = time.time()
+    try:
+        run = study.run_mpm_only(bins, scene, out, 1, name, duration=tau * scene.tau_c, pic_blend=blend,
+                                 transfer=transfer)
+    except RuntimeError as e:
+        return {"name": name, "a": a, "key": key, "cell": cell, "failed": str(e).splitlines()[-1][:200]}
+    s = study.read_series(run["results"])
+    with open(os.path.join(run["dir"], "mpm.json")) as f:
+        nsteps = json.load(f)["analysis"]["nsteps"]
+    pe0 = s["potential_energy"][0]
+    ke = (s["kinetic_energy_x"] + s["kinetic_energy_y"]) / pe0
+    t_star = s["time"] / scene.tau_c
+    at_rest = (s["max_speed"] < REST_SPEED) & (ke < REST_KE)
+    rest = None
+    if at_rest[-1]:
+        moving = np.nonzero(~at_rest)[0]
+        rest = float(t_star[moving[-1] + 1]) if len(moving) else float(t_star[0])
+    return {"name": name, "a": a, "key": key, "cell": cell, "t_end": float(t_star[-1]),
+            "runout": float((s["runout_x_p98"][-1] - width) / width), "pe": float(s["potential_energy"][-1] / pe0),
+            "max_speed": float(s["max_speed"][-1]), "ke": float(ke[-1]), "rest": rest,
+            "ms_per_step": 1e3 * run["wall"]["mpm"] / nsteps, "particles": int(s["n_particles"][-1]),
+            "wall": run["wall"]["mpm"], "elapsed": time.time() - t0}
+
+
+def table(results):
+    lines = ["| a | transfer | cell | runout (L-L0)/L0 | PE/PE0 | max speed (m/s) | KE/PE0 | at rest from t/tau_c | "
+             "ms per step (particles) |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in sorted(results, key=lambda r: (-r["a"], list(TRANSFERS).index(r["key"]), -r["cell"])):
+        if "failed" in r:
+            lines.append("| %g | %s | %g m | failed: %s | | | | | |" % (r["a"], LABELS[r["key"]], r["cell"], r["failed"]))
+            continue
+        rest = "%.2f" % r["rest"] if r["rest"] is not None else "not at t/tau_c = %.1f" % r["t_end"]
+        lines.append("| %g | %s | %g m | %.3f | %.3f | %.3g | %.2g | %s | %.2f (%d) |" % (
+            r["a"], LABELS[r["key"]], r["cell"], r["runout"], r["pe"], r["max_speed"], r["ke"], rest, r["ms_per_step"],
+            r["particles"]))
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--out", default=os.path.join(study.REPO, "results", "transfer_study"))
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--aspect", default="3,0.8")
+    ap.add_argument("--transfers", default="flip,pic,blend,apic")
+    ap.add_argument("--halved", default="apic", help="transfers also run with 0.5 m cells ('' for none)")
+    ap.add_argument("--tau", type=float, default=7.0, help="end time in units of tau_c")
+    ap.add_argument("--bin", default=os.path.join(study.REPO, "build", "bin"))
+    args = ap.parse_args(argv)
+    bins = {"mpm": os.path.join(args.bin, "mpm")}
+    if not os.access(bins["mpm"], os.X_OK):
+        sys.exit("transfer_study.py: error: %s not found (build the mpm target first, or --bin DIR)" % bins["mpm"])
+    os.makedirs(args.out, exist_ok=True)
+    jobs = []
+    for a in [float(x) for x in args.aspect.split(",")]:
+        for key in args.transfers.split(","):
+            jobs.append((a, key, 1.0))
+        for key in [k for k in args.halved.split(",") if k]:
+            jobs.append((a, key, 0.5))
+    results = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        futures = [pool.submit(run_one, bins, args.out, a, key, cell, args.tau) for a, key, cell in jobs]
+        for f in concurrent.futures.as_completed(futures):
+            r = f.result()
+            results.append(r)
+            study.log("done %s: %s" % (r["name"], json.dumps(r)))
+            with open(os.path.join(args.out, "summary.json"), "w") as g:
+                json.dump(results, g, indent=1)
+            with open(os.path.join(args.out, "summary.md"), "w") as g:
+                g.write(table(results))
+    print(table(results))
+
+
+if __name__ == "__main__":
+    main()
