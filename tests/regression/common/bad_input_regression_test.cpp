@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -89,8 +90,17 @@ struct OptionCase {
   const char* error;
 };
 
+/// Each case: fem2mpm with its options fails with its one-line error and writes nothing.
+void expect_fem2mpm_errors(std::initializer_list<OptionCase> cases) {
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    const auto dir = scratch("option");
+    expect_one_line_error(fem2mpm(dir, c.args), 2, c.error, dir);
+  }
+}
+
 TEST(BadInputRegression, Fem2mpmRejectsNonFiniteOptionValues) {
-  const OptionCase cases[] = {
+  expect_fem2mpm_errors({
       {"--gravity nan", "--gravity: expected a finite number, got nan"},
       {"--damping nan", "--damping: expected a number in [0, 1), got nan"},
       {"--base-friction inf", "--base-friction: expected a number >= 0, got inf"},
@@ -102,28 +112,18 @@ TEST(BadInputRegression, Fem2mpmRejectsNonFiniteOptionValues) {
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --tension nan", "tension cutoff: expected a number >= 0, got nan (--tension)"},
       {"--material-type mohr-coulomb --phi 30 --cohesion nan", "cohesion: expected a number >= 0, got nan (--cohesion)"},
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --psi nan", "dilation angle: expected an angle in degrees in [0, 90), got nan (--psi)"},
-  };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.args);
-    const auto dir = scratch("option");
-    expect_one_line_error(fem2mpm(dir, c.args), 2, c.error, dir);
-  }
+  });
 }
 
 TEST(BadInputRegression, Fem2mpmAppliesTheMpmDeckRules) {
   // Each of these wrote a deck that mpm then rejected: the bridge applies mpm's rules (mpm/io/deck_rules.hpp).
-  const OptionCase cases[] = {
+  expect_fem2mpm_errors({
       {"--damping 2", "--damping: expected a number in [0, 1), got 2"},
       {"--uuid ..", "--uuid: expected a plain folder name (letters, digits, '_', '-', '.', '+'; not '.' or '..'), got '..'"},
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --psi 35",
        "dilation angle: expected a dilation angle <= the friction angle (30 degrees), got 35 (--psi)"},
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --tension -1", "tension cutoff: expected a number >= 0, got -1 (--tension)"},
-  };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.args);
-    const auto dir = scratch("rule");
-    expect_one_line_error(fem2mpm(dir, c.args), 2, c.error, dir);
-  }
+  });
 }
 
 TEST(BadInputRegression, Fem2mpmRejectsANanInTheTransferredStressRow) {
