@@ -59,8 +59,9 @@ TEST(BadInputRegression, Fem2mpmHugeExtentIsAnErrorNotBadAlloc) {
   const auto dir = scratch("extent");
   const auto r = fem2mpm(dir, "--extent -1e6 1e6 -1e6 1e6");
   expect_one_line_error(r, 2, "fem2mpm: error: --extent: the grid would have 3265987 x 3265987 cells of 0.612372436 m (at most 100000000 cells)", dir);
-  if (fs::exists(dir / "deck"))
+  if (fs::exists(dir / "deck")) {
     for (const auto& e : fs::recursive_directory_iterator(dir / "deck")) EXPECT_FALSE(e.is_regular_file()) << e.path();
+  }
 }
 
 TEST(BadInputRegression, Fem2mpmTinyCellSizeIsAnErrorNotBadAlloc) {
