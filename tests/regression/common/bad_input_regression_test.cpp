@@ -161,6 +161,20 @@ TEST(BadInputRegression, Fem2mpmJsonNumberOverflowNamesFileAndKey) {
   EXPECT_NE(r.err.find("crd[0]: number overflow parsing '1e400'"), std::string::npos) << r.err;
 }
 
+TEST(BadInputRegression, Fem2mpmGravityFromHugeBodyForcesIsNotWrittenAsNull) {
+  // Found by the long fuzz run: bodyForces 1e308 (kN) gave gravity inf, written as null into mpm.json.
+  const auto dir = scratch("body_force");
+  std::string text = test_support::read_text(kCase / "model.json");
+  const auto at = text.find("\"bodyForces\": [") + 15;
+  text.replace(at, text.find(',', at) - at, "1e308");
+  std::ofstream(dir / "model.json") << text;
+  const auto r = test_support::run_program((kBin / "fem2mpm").string() + " --model " + quoted(dir / "model.json") + " --disp " +
+                                               quoted(kCase / "disp.out") + " --stress " + quoted(kCase / "stress.out") +
+                                               " --units kN --out " + quoted(dir / "deck"),
+                                           dir);
+  expect_one_line_error(r, 2, "model.json: bodyForces: the gravity they give (body force / density) is inf, not finite; give --gravity", dir);
+}
+
 TEST(BadInputRegression, Fem2mpmEscapesBinaryBytesInMessages) {
   const auto dir = scratch("binary");
   const auto r = fem2mpm(dir, "--nodes \"$(printf '1-\\001\\033[31m\\377')\"");
