@@ -384,6 +384,9 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     double sum = 0;
     for (double g : gravity_samples) sum += g;
     st.gravity = sum / static_cast<double>(gravity_samples.size());
+    if (!std::isfinite(st.gravity))
+      throw common::InputError(model.source.string() + ": bodyForces", "the gravity they give (body force / density) is " +
+                                                                          fmt(st.gravity) + ", not finite; give --gravity");
     out.notes.push_back("gravity " + fmt(st.gravity) + " m/s2 from the elements' body forces / density (override with --gravity)");
   } else {
     st.gravity = 9.81;

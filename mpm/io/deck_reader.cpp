@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "common/finite_number.hpp"
 #include "common/input_error.hpp"
 #include "common/json_file.hpp"
 #include "common/number_text.hpp"
@@ -350,6 +351,11 @@ void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattic
         if (it == sets.cells.end()) g.fail("cset_id", "cell set " + std::to_string(cset) + " is not defined in the entity sets");
         cells = it->second;
       }
+      // Counted before generating: 1e8 cells x 25 points must be an error, not std::bad_alloc.
+      if (const auto problem = common::size_problem(static_cast<double>(cells.size()) * static_cast<double>(nppd * nppd),
+                                                    sizeof(ParticleRecord), "particles");
+          !problem.empty())
+        g.fail("nparticles_per_dir", problem);
       const auto pts = gauss_points(static_cast<int>(nppd));
       for (long long c : cells) {
         const auto [i, j] = lattice.cell_ij[c];
@@ -490,6 +496,8 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     const Eigen::Vector2d origin = pair("origin", false), h = pair("cell_size", false), n = pair("cells", true);
     if (!(h.x() > 0 && h.y() > 0)) g.fail("cell_size", "expected sizes > 0");
     if (!(n.x() >= 1 && n.y() >= 1 && n.x() * n.y() <= 1e8)) g.fail("cells", "expected 1 to 1e8 cells");
+    // The lattice holds ~16 node ids and a few coordinates per cell.
+    if (const auto problem = common::size_problem(n.x() * n.y(), 256, "cells"); !problem.empty()) g.fail("cells", problem);
     g.finish();
     lattice = generate_lattice(origin, h, static_cast<int>(n.x()), static_cast<int>(n.y()), type);
     named_sets = boundary_node_sets(lattice.grid);

@@ -440,6 +440,8 @@ def main():
     ap.add_argument("--seed", default="1")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--timeout", type=float, default=30.0, help="seconds per case before it counts as a hang")
+    ap.add_argument("--max-seconds", type=float, default=None,
+                    help="stop starting new cases after this long and report the cases run (the table says how many)")
     ap.add_argument("--work", default=None, help="scratch folder (default: a fresh temporary folder, removed)")
     ap.add_argument("--keep", default=None, help="where failing inputs are kept (default: <work>/failures)")
     args = ap.parse_args()
@@ -461,15 +463,20 @@ def main():
         futures = [pool.submit(one_case, t, i, args.seed, bins, work, keep, args.timeout, seeds)
                    for i in range(args.cases) for t in targets]
         for f in concurrent.futures.as_completed(futures):
+            if f.cancelled():
+                continue
             t, i, outcome = f.result()
             counts[t][outcome] += 1
+            if args.max_seconds is not None and time.time() - start > args.max_seconds:
+                for g in futures:
+                    g.cancel()
     elapsed = time.time() - start
 
     width = max(len(o) for o in OUTCOMES)
-    print(f"fuzz: {args.cases} cases per target, seed {args.seed}, {elapsed:.0f} s, binaries {bins}")
-    print(f"{'target':<10}" + "".join(f"{o:>{width + 2}}" for o in OUTCOMES))
+    print(f"fuzz: up to {args.cases} cases per target, seed {args.seed}, {elapsed:.0f} s, binaries {bins}")
+    print(f"{'target':<10}{'cases':>8}" + "".join(f"{o:>{width + 2}}" for o in OUTCOMES))
     for t in targets:
-        print(f"{t:<10}" + "".join(f"{counts[t][o]:>{width + 2}}" for o in OUTCOMES))
+        print(f"{t:<10}{sum(counts[t].values()):>8}" + "".join(f"{counts[t][o]:>{width + 2}}" for o in OUTCOMES))
     bad = sum(counts[t][o] for t in targets for o in BAD)
     if bad:
         print(f"fuzz: {bad} bad outcome(s); inputs kept in {keep}")

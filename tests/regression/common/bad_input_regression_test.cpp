@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -58,8 +59,9 @@ TEST(BadInputRegression, Fem2mpmHugeExtentIsAnErrorNotBadAlloc) {
   const auto dir = scratch("extent");
   const auto r = fem2mpm(dir, "--extent -1e6 1e6 -1e6 1e6");
   expect_one_line_error(r, 2, "fem2mpm: error: --extent: the grid would have 3265987 x 3265987 cells of 0.612372436 m (at most 100000000 cells)", dir);
-  if (fs::exists(dir / "deck"))
+  if (fs::exists(dir / "deck")) {
     for (const auto& e : fs::recursive_directory_iterator(dir / "deck")) EXPECT_FALSE(e.is_regular_file()) << e.path();
+  }
 }
 
 TEST(BadInputRegression, Fem2mpmTinyCellSizeIsAnErrorNotBadAlloc) {
@@ -89,8 +91,17 @@ struct OptionCase {
   const char* error;
 };
 
+/// Each case: fem2mpm with its options fails with its one-line error and writes nothing.
+void expect_fem2mpm_errors(std::initializer_list<OptionCase> cases) {
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.args);
+    const auto dir = scratch("option");
+    expect_one_line_error(fem2mpm(dir, c.args), 2, c.error, dir);
+  }
+}
+
 TEST(BadInputRegression, Fem2mpmRejectsNonFiniteOptionValues) {
-  const OptionCase cases[] = {
+  expect_fem2mpm_errors({
       {"--gravity nan", "--gravity: expected a finite number, got nan"},
       {"--damping nan", "--damping: expected a number in [0, 1), got nan"},
       {"--base-friction inf", "--base-friction: expected a number >= 0, got inf"},
@@ -102,28 +113,18 @@ TEST(BadInputRegression, Fem2mpmRejectsNonFiniteOptionValues) {
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --tension nan", "tension cutoff: expected a number >= 0, got nan (--tension)"},
       {"--material-type mohr-coulomb --phi 30 --cohesion nan", "cohesion: expected a number >= 0, got nan (--cohesion)"},
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --psi nan", "dilation angle: expected an angle in degrees in [0, 90), got nan (--psi)"},
-  };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.args);
-    const auto dir = scratch("option");
-    expect_one_line_error(fem2mpm(dir, c.args), 2, c.error, dir);
-  }
+  });
 }
 
 TEST(BadInputRegression, Fem2mpmAppliesTheMpmDeckRules) {
   // Each of these wrote a deck that mpm then rejected: the bridge applies mpm's rules (mpm/io/deck_rules.hpp).
-  const OptionCase cases[] = {
+  expect_fem2mpm_errors({
       {"--damping 2", "--damping: expected a number in [0, 1), got 2"},
       {"--uuid ..", "--uuid: expected a plain folder name (letters, digits, '_', '-', '.', '+'; not '.' or '..'), got '..'"},
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --psi 35",
        "dilation angle: expected a dilation angle <= the friction angle (30 degrees), got 35 (--psi)"},
       {"--material-type mohr-coulomb --phi 30 --cohesion 5 --tension -1", "tension cutoff: expected a number >= 0, got -1 (--tension)"},
-  };
-  for (const auto& c : cases) {
-    SCOPED_TRACE(c.args);
-    const auto dir = scratch("rule");
-    expect_one_line_error(fem2mpm(dir, c.args), 2, c.error, dir);
-  }
+  });
 }
 
 TEST(BadInputRegression, Fem2mpmRejectsANanInTheTransferredStressRow) {
@@ -158,6 +159,20 @@ TEST(BadInputRegression, Fem2mpmJsonNumberOverflowNamesFileAndKey) {
                                            dir);
   expect_one_line_error(r, 2, "model.json:", dir);
   EXPECT_NE(r.err.find("crd[0]: number overflow parsing '1e400'"), std::string::npos) << r.err;
+}
+
+TEST(BadInputRegression, Fem2mpmGravityFromHugeBodyForcesIsNotWrittenAsNull) {
+  // Found by the long fuzz run: bodyForces 1e308 (kN) gave gravity inf, written as null into mpm.json.
+  const auto dir = scratch("body_force");
+  std::string text = test_support::read_text(kCase / "model.json");
+  const auto at = text.find("\"bodyForces\": [") + 15;
+  text.replace(at, text.find(',', at) - at, "1e308");
+  std::ofstream(dir / "model.json") << text;
+  const auto r = test_support::run_program((kBin / "fem2mpm").string() + " --model " + quoted(dir / "model.json") + " --disp " +
+                                               quoted(kCase / "disp.out") + " --stress " + quoted(kCase / "stress.out") +
+                                               " --units kN --out " + quoted(dir / "deck"),
+                                           dir);
+  expect_one_line_error(r, 2, "model.json: bodyForces: the gravity they give (body force / density) is inf, not finite; give --gravity", dir);
 }
 
 TEST(BadInputRegression, Fem2mpmEscapesBinaryBytesInMessages) {

@@ -80,7 +80,7 @@ TEST(TclCommands, MissingAndDuplicateTags) {
   // a missing tag found after parsing still gets the usage line
   const std::string mass = error_of(interp, "mass 9 1.0 1.0");
   EXPECT_NE(mass.find("mass 9: node 9 does not exist; usage: mass nodeTag m1 m2"), std::string::npos) << mass;
-  EXPECT_NE(error_of(interp, "node 9 nan 0.0").find("expected a finite x"), std::string::npos);
+  EXPECT_NE(error_of(interp, "node 9 nan 0.0").find("expected x (a finite number), got 'nan'"), std::string::npos);
 }
 
 TEST(TclCommands, ClockwiseAndCollapsedElementsAreRejected) {
