@@ -95,9 +95,13 @@ TEST(ApicTransfer, SpinningDiskKeepsItsAngularMomentum) {
       const auto flip = spin(type, scheme, Transfer::FLIP);
       std::printf("cells %d scheme %d: dL/L0 after 1 s: APIC %.2e, PIC %.2e, FLIP %.2e\n", static_cast<int>(type),
                   static_cast<int>(scheme), apic[0], pic[0], flip[0]);
-      EXPECT_LT(std::abs(apic[0]), 1e-12);  // round-off of ~130 steps
-      EXPECT_LT(pic[0], -0.5);              // PIC's transfers dissipate the rotation
-      EXPECT_GT(std::abs(flip[0]), 1e3 * std::abs(apic[0]) + 1e-12);
+      // USL drops the internal force at nodes lighter than 2 % of a full node (the small-mass cutoff,
+      // mpm/core/engine.hpp small_mass_), which the disk's rim touches: the grid update itself then no
+      // longer conserves angular momentum exactly (measured 1.0e-4 after 1 s), whatever the transfer.
+      const bool cutoff = scheme == Scheme::USL;
+      EXPECT_LT(std::abs(apic[0]), cutoff ? 1e-3 : 1e-12);  // round-off of ~130 steps
+      EXPECT_LT(pic[0], -0.5);                              // PIC's transfers dissipate the rotation
+      EXPECT_GT(std::abs(flip[0]), (cutoff ? 1e2 : 1e3) * std::abs(apic[0]) + 1e-12);
       for (const auto& r : {apic, pic, flip}) EXPECT_LT(r[1], 1e-12);  // linear momentum stays zero
     }
   }
