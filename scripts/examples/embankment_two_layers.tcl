@@ -4,7 +4,9 @@
 # stand at 45 degrees on its own and slides off the lower one (phi 38, c 20 kPa), which stays in place.
 #
 # Sample run (about 15 s; figures and summary.md in results/embankment_two_layers):
-#   scripts/hybrid_run.py scripts/examples/embankment_two_layers.tcl --transfer 0.5 --duration 3 --out results/embankment_two_layers --units kN --ppd 2 --cfl 0.4 --cell-size 0.5 --extent 0 30 -0.5 10 --base-y 0 --left-wall roller --right-wall none --base friction --base-friction 0.5
+#   scripts/hybrid_run.py scripts/examples/embankment_two_layers.tcl --transfer 0.5 --duration 3 --out results/embankment_two_layers --units kN --ppd 2 --cfl 0.4 --base-friction 0.5
+#
+# Walls, base, grid and cell size come from the FEM supports (fem2mpm defaults).
 #
 # Test run (tests/regression/study/examples_sample_runs_test.py: these values replace the sample run's):
 #   --duration 1 --ppd 1 -- -cell 1

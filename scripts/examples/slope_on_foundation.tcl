@@ -4,7 +4,9 @@
 # plastic, and the runout is carried by MPM.
 #
 # Sample run (about 15 s; figures and summary.md in results/slope_on_foundation):
-#   scripts/hybrid_run.py scripts/examples/slope_on_foundation.tcl --transfer 0.5 --duration 3 --out results/slope_on_foundation --units kN --ppd 2 --cfl 0.4 --cell-size 1 --extent 0 44 -1 20 --base-y 0 --left-wall roller --right-wall roller --base friction --base-friction 0.47
+#   scripts/hybrid_run.py scripts/examples/slope_on_foundation.tcl --transfer 0.5 --duration 3 --out results/slope_on_foundation --units kN --ppd 2 --cfl 0.4 --base-friction 0.47
+#
+# Walls, base, grid and cell size come from the FEM supports (fem2mpm defaults).
 #
 # Test run (tests/regression/study/examples_sample_runs_test.py: these values replace the sample run's):
 #   --duration 1 --ppd 1 -- -cell 2
