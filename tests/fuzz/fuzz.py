@@ -172,13 +172,18 @@ def h5_problem(path: Path):
         import numpy as np
     except ImportError:
         return None
+    # A particle file holds CB-Geo's /table; mpm's initial_state.h5 (the first ParaView frame, a view
+    # and not a restart file) holds only the /xdmf arrays.
     try:
         with h5py.File(path, "r") as f:
-            table = f["table"][...]
+            if "table" in f:
+                table = f["table"][...]
+                columns = [table[name] for name in table.dtype.names]
+            else:
+                columns = [f["xdmf"][name][...] for name in f["xdmf"]]
     except Exception:
         return "half-written"
-    for name in table.dtype.names:
-        col = table[name]
+    for col in columns:
         if col.dtype.kind == "f" and not np.isfinite(col).all():
             return "non-finite"
     return None
