@@ -92,10 +92,12 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   }
   if (!(dt_ > 0) || !std::isfinite(dt_)) throw common::InputError("analysis.dt", "expected a time step > 0");
 
-  // Small-mass cutoff (USL only): a fraction of the mass of a full node of the lightest material.
+  // Small-mass cutoff (where particles read unweighted gradients of the updated grid velocity: USL's
+  // strain increment, APIC's C_p on bilinear cells): a fraction of a full node of the lightest material.
   double lightest = std::numeric_limits<double>::infinity();
   for (const auto& spec : deck.materials) lightest = std::min(lightest, spec.density);
-  small_mass_ = scheme_ == io::Scheme::USL ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
+  const bool reads_updated_gradients = scheme_ == io::Scheme::USL || (transfer_.affine() && !gimp);
+  small_mass_ = reads_updated_gradients ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
 
   // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).
   constraint_of_.assign(nodes_, -1);
@@ -597,7 +599,7 @@ void Engine::report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t
 
 /// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
 /// FLIP v += dt sum N a, PIC v = sum N v_new, blended (VelocityTransfer::particle_velocity); APIC
-/// (Affine) v = sum N v_new and B_p = sum N v_new (x_i - x_p)^T (Jiang et al. 2015); x += dt sum N v_new.
+/// (Affine) v = sum N v_new and the new B_p (Jiang et al. 2015; AffineUpdate); x += dt sum N v_new.
 /// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
 /// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
 /// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
@@ -620,7 +622,6 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     const double* dwy = wx + 3 * W;
     double vgx = 0, vgy = 0, agx = 0, agy = 0;
     double lxx = 0, lyy = 0, lxy = 0, lyx = 0;
-    double B[4] = {0, 0, 0, 0};  // APIC: sum N v_new (x_i - x_p)^T
     const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
     double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
     if constexpr (Affine)
@@ -628,6 +629,7 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         dxs[a] = offset[0] + a * grid_.hx;
         dys[a] = offset[1] + a * grid_.hy;
       }
+    AffineUpdate<Shape> affine;  // APIC: the new matrix (velocity_transfer.hpp)
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
       const double* u = &updated_[4 * node_row];
@@ -636,11 +638,7 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         vgx += N * u[0];
         vgy += N * u[1];
         if constexpr (Affine) {
-          const double Nvx = N * u[0], Nvy = N * u[1];
-          B[0] += Nvx * dxs[a];
-          B[1] += Nvx * dys[b];
-          B[2] += Nvy * dxs[a];
-          B[3] += Nvy * dys[b];
+          affine.add(N, dwx[a] * wy[b], wx[a] * dwy[b], dxs[a], dys[b], u[0], u[1]);
         } else {
           agx += N * u[2];
           agy += N * u[3];
@@ -665,9 +663,15 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
     nxt_.vx[k] = vx;
     nxt_.vy[k] = vy;
-    if constexpr (Affine) std::copy_n(B, 4, &nxt_.affine[4 * k]);
+    if constexpr (Affine)
+      affine.matrix((x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1, grid_.hx, grid_.hy,
+                    &nxt_.affine[4 * k]);
     if (remap_momentum) {
-      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B, wx, Affine ? offset[0] : 0.0,
+      double B_old[4] = {0, 0, 0, 0};  // APIC: the new matrix read at x^n, where the remap maps it
+      if constexpr (Affine)
+        affine.matrix((cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
+                      grid_.hx, grid_.hy, B_old);
+      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B_old, wx, Affine ? offset[0] : 0.0,
                                                          Affine ? offset[1] : 0.0, grid_.hx, grid_.hy);
       double* band_row = g + local_[k];
       for (int b = 0; b < W; ++b, band_row += row_stride) {

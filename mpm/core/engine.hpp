@@ -139,15 +139,17 @@ class Engine {
   std::vector<std::size_t> chunk_offset_;
   std::vector<std::size_t> row_first_chunk_;  ///< per node row: the first chunk whose band reaches it
   int box_width_ = 0;                             ///< bi1_ - bi0_
-  /// Small-mass cutoff of USL (kg per unit thickness; 0 for USF and MUSL): a node with less mass than 2 % of a full node of the
+  /// Small-mass cutoff of USL and of bilinear APIC (kg per unit thickness; otherwise 0): a node with less mass than 2 % of a full node of the
   /// lightest material (0.02 rho_min hx hy) is accelerated by gravity alone: its internal force
   /// -sum V grad N . sigma is dropped (the body force per unit mass is g at every node). Why: at a node of mass fraction xi = m / (rho h^2) that only a particle's edge touches,
   /// a = f / m grows like 1 / xi (f ~ V sigma grad N stays finite), and USL's strain increment from
   /// v_new = v + a dt is amplified by about CFL^2 / xi: a particle entering an empty cell at speed sees
   /// its stress explode (the USL instability of Sulsky, Zhou & Schreyer 1995, section 4). The cutoff
-  /// keeps that amplification below ~12 at CFL 0.5. USF and MUSL take the strain increment from the
+  /// keeps that amplification below ~12 at CFL 0.5. APIC on bilinear cells reads the same unweighted
+  /// gradient, C_p = sum v_i grad w_ip^T (velocity_transfer.hpp), so it takes the cutoff in every scheme
+  /// (without it the sliding block's front runs away at step 70). USF and MUSL take the strain increment from the
   /// velocity of the mapped (or remapped) momentum, a mass-weighted mean of particle velocities that
-  /// stays bounded, so they need no cutoff and keep every nodal force. Cf. Uintah's min_mass_for_acceleration
+  /// stays bounded, so with FLIP, PIC or uGIMP APIC they need no cutoff and keep every nodal force. Cf. Uintah's min_mass_for_acceleration
   /// (MPMFlags; there the whole acceleration is zeroed below an absolute mass).
   double small_mass_ = 0.0;
   std::vector<std::int32_t> constraint_of_;       ///< per node: index into constraints_, -1: unconstrained

@@ -75,6 +75,63 @@ inline void affine_axis_weights(LinearShape, const double* /*w*/, const double* 
   for (int k = 0; k < LinearShape::kWidth; ++k) a[k] = dw[k];
 }
 
+/// g2p's new APIC matrix of one particle, accumulated over its stencil: node (a, b) with weight N, weight
+/// gradient (dNx, dNy) per metre, node minus particle (dx, dy) at x^n and updated velocity (vx, vy).
+/// `matrix(s_x, s_y, ...)` is the matrix B_p for the particle at lattice coordinates (s_x, s_y) (in units
+/// of h from the lattice origin), the one p2g (or MUSL's remap) reads there with D_p at that position.
+template <class Shape>
+struct AffineUpdate;
+
+/// uGIMP: B = sum_i N v_i (x_i - x_p^n)^T, the same wherever it is read (Jiang et al. 2015, the APIC
+/// transfer; Jiang, Schroeder & Teran 2017): read with D_p(x^(n+1)) at the next p2g, the transfers
+/// conserve angular momentum exactly, and D_p >= lp h / 2 keeps B D_p^-1 bounded.
+template <>
+struct AffineUpdate<GimpShape> {
+  double B[4] = {0, 0, 0, 0};
+  void add(double N, double /*dNx*/, double /*dNy*/, double dx, double dy, double vx, double vy) {
+    B[0] += N * vx * dx;
+    B[1] += N * vx * dy;
+    B[2] += N * vy * dx;
+    B[3] += N * vy * dy;
+  }
+  void matrix(double /*sx*/, double /*sy*/, int /*max_cell_x*/, int /*max_cell_y*/, double /*hx*/, double /*hy*/,
+              double* out) const {
+    for (int k = 0; k < 4; ++k) out[k] = B[k];
+  }
+};
+
+/// Bilinear: C = sum_i v_i grad w_ip^T, which is B D_p^-1 at x^n (the identity APIC 2015 notes for
+/// multilinear weights), and B = C D_p at the position where it is read, D_p = diag(t (1 - t) h^2) with
+/// t the position in its cell: p2g then reads C itself. Storing B(x^n) would be read as B(x^n)
+/// D_p(x^(n+1))^-1, unbounded where D_p vanishes on a grid line (the nearly empty node ahead of a front
+/// runs away: the sliding block at step 70). The price: the affine angular momentum m eps : (C D_p)^T
+/// follows D_p along the particle's path, so bilinear APIC conserves angular momentum only to O(dt)
+/// per step (the spinning disk, tests/verification/mpm/apic_transfer_test.cpp).
+template <>
+struct AffineUpdate<LinearShape> {
+  double C[4] = {0, 0, 0, 0};
+  void add(double /*N*/, double dNx, double dNy, double /*dx*/, double /*dy*/, double vx, double vy) {
+    C[0] += vx * dNx;
+    C[1] += vx * dNy;
+    C[2] += vy * dNx;
+    C[3] += vy * dNy;
+  }
+  void matrix(double sx, double sy, int max_cell_x, int max_cell_y, double hx, double hy, double* out) const {
+    const double Dxx = inertia(sx, max_cell_x) * hx * hx, Dyy = inertia(sy, max_cell_y) * hy * hy;
+    out[0] = C[0] * Dxx;
+    out[1] = C[1] * Dyy;
+    out[2] = C[2] * Dxx;
+    out[3] = C[3] * Dyy;
+  }
+  /// D_p / h^2 along one axis: t (1 - t), t the position in the cell LinearShape::eval picks.
+  static double inertia(double s, int max_cell) {
+    int base = 0;
+    double w[2], dw[2];
+    LinearShape::eval(s, 0.0, max_cell, base, w, dw);
+    return w[0] * w[1];
+  }
+};
+
 /// What one particle adds to the momentum of node (a, b) of its stencil (weight N = wx_a wy_b):
 /// m_p N v_p, and with APIC (Affine) also m_p B_p (ax_a wy_b, wx_a ay_b) = m_p N B_p D_p^-1 (x_i - x_p).
 /// Built once per particle per p2g (and per MUSL remap) from its weights at its current position.
