@@ -107,8 +107,9 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
       << fmt(d.grid.h) << " m from (" << fmt(d.grid.x0) << ", " << fmt(d.grid.y0) << "); dt " << fmt(d.dt)
       << " s, nsteps " << d.nsteps << ", output every " << d.output_steps << " steps\n";
   for (const auto& b : boundaries) out << "  boundary: " << boundary_text(b, d) << "\n";
-  out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, particles.txt, "
-      << "report.json in " << outdir.string() << "\n";
+  out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, ";
+  for (const auto& f : d.particle_files) out << f.first << ", ";
+  out << "report.json in " << outdir.string() << "\n";
   out << "  time: read " << fmt(t.read, 3) << " s, map " << fmt(t.map, 3) << " s, report + deck " << fmt(t.report_deck, 3)
       << " s, write text " << fmt(t.write_text, 3) << " s; write HDF5 " << fmt(t.write_h5, 3) << " s (concurrently)\n";
   out << "  run: mpm -f " << outdir.string() << "/ -i mpm.json\n";
@@ -245,7 +246,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     text("mpm.json", d.mpm_json);
     text("mesh.txt", d.mesh_txt);
     text("entity_sets.json", d.entity_sets_json);
-    text("particles.txt", d.particles_txt);
+    for (const auto& [name, body] : d.particle_files) text(name.c_str(), body);
     text("report.json", rj.dump(2) + "\n");
     for (auto& f : files) f->stream().flush();
     timing.write_text = lap();

@@ -6,7 +6,9 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/finite_number.hpp"
 #include "common/input_error.hpp"
@@ -36,6 +38,21 @@ void append_integer(std::string& out, long v) {
   char buf[24];
   const auto res = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, res.ptr);
+}
+
+/// A particle coordinate file (CB-Geo's Ascii2D generator file): the count, then x and y per line.
+std::string coordinate_file(std::span<const mpm::io::ParticleRecord> particles) {
+  std::string out;
+  out.reserve(particles.size() * 40 + 16);
+  append_integer(out, static_cast<long>(particles.size()));
+  out += '\n';
+  for (const auto& p : particles) {
+    append_number(out, p.coord_x);
+    out += '\t';
+    append_number(out, p.coord_y);
+    out += '\n';
+  }
+  return out;
 }
 
 double p_wave_speed(const MpmMaterial& m) {
@@ -278,14 +295,36 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   if (!fric.empty()) bc["friction_constraints"] = fric;
   mesh_block["boundary_conditions"] = bc;
   deck["mesh"] = mesh_block;
-  deck["particles"] = ordered_json::array({{{"generator",
-                                             {{"check_duplicates", false},
-                                              {"location", "particles.txt"},
-                                              {"io_type", "Ascii2D"},
-                                              {"pset_id", 0},
-                                              {"particle_type", "P2D"},
-                                              {"material_id", state.materials.empty() ? 0u : state.materials.front().id},
-                                              {"type", "file"}}}}});
+  // One generator per material (CB-Geo gives a generator one material_id), each reading its own
+  // coordinate file; the particles are grouped by material (generate_particles), so a fresh start
+  // numbers them as the HDF5 file does.
+  d.particle_files.clear();
+  ordered_json generators = ordered_json::array();
+  std::vector<std::pair<std::size_t, std::size_t>> runs;  // [first, last) of equal material_id
+  for (std::size_t k = 0; k < particles.size(); ++k)
+    if (k == 0 || particles[k].material_id != particles[k - 1].material_id) runs.emplace_back(k, k);
+  for (auto& r : runs) {
+    r.second = r.first;
+    while (r.second < particles.size() && particles[r.second].material_id == particles[r.first].material_id) ++r.second;
+  }
+  if (runs.empty()) runs.emplace_back(0, 0);
+  std::set<unsigned> seen;
+  for (const auto& [first, last] : runs) {
+    const unsigned id = first < particles.size() ? particles[first].material_id
+                                                 : (state.materials.empty() ? 0u : state.materials.front().id);
+    if (!seen.insert(id).second) throw std::logic_error("format_deck: the particles are not grouped by material");
+    const std::string name = runs.size() == 1 ? "particles.txt" : "particles_material" + std::to_string(id) + ".txt";
+    generators.push_back({{"generator",
+                           {{"check_duplicates", false},
+                            {"location", name},
+                            {"io_type", "Ascii2D"},
+                            {"pset_id", generators.size()},
+                            {"particle_type", "P2D"},
+                            {"material_id", id},
+                            {"type", "file"}}}});
+    d.particle_files.emplace_back(name, coordinate_file(particles.subspan(first, last - first)));
+  }
+  deck["particles"] = generators;
   ordered_json mats = ordered_json::array();
   for (const auto& m : state.materials) mats.push_back(material_json(m));
   deck["materials"] = mats;
@@ -306,17 +345,6 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   deck["post_processing"] = {{"path", "results/"}, {"output_steps", d.output_steps}};
   d.mpm_json = deck.dump(2) + "\n";
 
-  // particles.txt: count, then coordinates (used only for a fresh start; resume reads the HDF5 file).
-  std::string& pt = d.particles_txt;
-  pt.reserve(particles.size() * 40 + 16);
-  append_integer(pt, static_cast<long>(particles.size()));
-  pt += '\n';
-  for (const auto& p : particles) {
-    append_number(pt, p.coord_x);
-    pt += '\t';
-    append_number(pt, p.coord_y);
-    pt += '\n';
-  }
 }
 
 DeckText build_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,

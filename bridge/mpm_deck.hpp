@@ -73,7 +73,10 @@ struct DeckText {
   double dt = 0;
   long long nsteps = 0, output_steps = 0;
   std::string particle_file;                  ///< results/<uuid>/particles<step>.h5, relative to the deck
-  std::string mpm_json, mesh_txt, entity_sets_json, particles_txt;
+  std::string mpm_json, mesh_txt, entity_sets_json;
+  /// The particle coordinate files of the deck's generators (name, body): particles.txt for one
+  /// material, particles_material<id>.txt per material for several.
+  std::vector<std::pair<std::string, std::string>> particle_files;
 };
 
 /// Chooses the grid (throws common::InputError naming the option when a particle lies outside the

@@ -51,9 +51,21 @@ ParticleList generate_particles(const TransferState& state,
                         shape_functions(xi, eta)});
     }
 
+  // Particles are grouped by material (each group in element order), so that the deck's one particle
+  // file per material (CB-Geo's generator per material_id) numbers them as the HDF5 file does.
+  std::vector<std::size_t> slot(state.elements.size());  // an element's first particle / per_element
+  {
+    std::vector<std::size_t> count(state.materials.size(), 0);
+    for (const auto& el : state.elements) ++count[el.material];
+    std::vector<std::size_t> next(state.materials.size(), 0);
+    for (std::size_t m = 1; m < count.size(); ++m) next[m] = next[m - 1] + count[m - 1];
+    for (std::size_t e = 0; e < state.elements.size(); ++e) slot[e] = next[state.elements[e].material]++;
+  }
+
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t ie = 0; ie < static_cast<std::ptrdiff_t>(state.elements.size()); ++ie) {
     const auto e = static_cast<std::size_t>(ie);
+    const std::size_t first = slot[e] * per_element;
     const TransferElement& el = state.elements[e];
     const QuadNodes x = state.current_nodes(el);
     const QuadNodes X = state.reference_nodes(el);
@@ -71,8 +83,8 @@ ParticleList generate_particles(const TransferState& state,
       const Point& pt = points[q];
       const auto& N = pt.shape;
       // Value-initialisation zeroes the whole record, padding included (byte-reproducible files).
-      mpm::io::ParticleRecord& r = *::new (static_cast<void*>(&out[e * per_element + q])) mpm::io::ParticleRecord{};
-      r.id = static_cast<std::int64_t>(e * per_element + q);
+      mpm::io::ParticleRecord& r = *::new (static_cast<void*>(&out[first + q])) mpm::io::ParticleRecord{};
+      r.id = static_cast<std::int64_t>(first + q);
       double volume = 0, ref_volume = 0;
       if (options.volume_split == VolumeSplit::Jacobian) {
         volume = jacobian_determinant(x, pt.xi, pt.eta) * pt.w;

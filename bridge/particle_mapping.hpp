@@ -55,8 +55,9 @@ std::vector<long> inverted_elements(const TransferState& state);
 /// pdstrain = 0. Returns the count (7).
 unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& stress, double* svars);
 
-/// Generates the particles: element by element, n x n Gauss-Legendre points in (xi, eta), eta-major
-/// (id = element_index * n^2 + j * n + i). Position, displacement, velocity and stress from the nodal
+/// Generates the particles: n x n Gauss-Legendre points in (xi, eta) per element, eta-major, grouped by
+/// material (the materials in state order, each material's elements in element order: id =
+/// (slot of the element in that order) * n^2 + j * n + i). Position, displacement, velocity and stress from the nodal
 /// values with N_a; volume from the current geometry, mass = density x reference volume (so the
 /// total mass equals sum density x reference area exactly); nsize = 2/n; cell_id -1; status 1.
 ParticleList generate_particles(const TransferState& state,

@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
       t_deck.push_back(seconds([&] {
         const auto d = bridge::build_deck(a.state, particles, {});
         std::ofstream(dir / "phase/mesh.txt") << d.mesh_txt;
-        std::ofstream(dir / "phase/particles.txt") << d.particles_txt;
+        for (const auto& [name, body] : d.particle_files) std::ofstream(dir / "phase" / name) << body;
       }));
       // The whole program.
       const char* args[] = {"fem2mpm", "--model", model.c_str(), "--disp", disp.c_str(), "--vel", vel.c_str(), "--stress",

@@ -7,10 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "bridge/drucker_prager_match.hpp"
 #include "bridge/fem_state_reader.hpp"
+#include "bridge/mpm_deck.hpp"
+#include "mpm/io/deck_reader.hpp"
 #include "bridge/particle_mapping.hpp"
 #include "bridge/stress_recovery.hpp"
 #include "support/input_error_message.hpp"
@@ -95,6 +99,44 @@ TEST_F(MaterialMapping, EachFemMaterialBecomesItsOwnMpmMaterial) {
   const auto particles = bridge::generate_particles(a.state, bridge::recover_nodal_stress(a.state, bridge::Recovery::InverseDistance), {});
   ASSERT_EQ(particles.size(), 48u);
   for (const auto& p : particles) EXPECT_EQ(p.material_id, static_cast<unsigned>(p.coord_x)) << "particle " << p.id;
+}
+
+TEST_F(MaterialMapping, AFreshStartGivesEachParticleItsOwnMaterial) {
+  // Elements of materials 2, 1, 2 (interleaved): the particles are grouped by material, the deck has one
+  // file generator per material, and a fresh (non-resumed) start of it reads every particle back with
+  // the material and position the HDF5 file gives it (same ids).
+  std::string model = kModel;
+  const auto swap = [&](const std::string& from, const std::string& to) { model.replace(model.find(from), from.size(), to); };
+  swap(R"("nodes": [1, 2, 6, 5], "thickness": 1, "material": "1")", R"("nodes": [1, 2, 6, 5], "thickness": 1, "material": "2")");
+  swap(R"("nodes": [2, 3, 7, 6], "thickness": 1, "material": "2")", R"("nodes": [2, 3, 7, 6], "thickness": 1, "material": "1")");
+  swap(R"("nodes": [3, 4, 8, 7], "thickness": 1, "material": "3")", R"("nodes": [3, 4, 8, 7], "thickness": 1, "material": "2")");
+  swap(R"({"name": "3", "type": "DruckerPrager")", R"({"name": "9", "type": "DruckerPrager")");
+  const auto a = bridge::read_fem_state(bridge::parse_fem_model(model, "model.json"), options_);
+  const auto particles = bridge::generate_particles(a.state, bridge::recover_nodal_stress(a.state, bridge::Recovery::InverseDistance), {});
+  ASSERT_EQ(particles.size(), 48u);
+  const bridge::DeckText d = bridge::build_deck(a.state, particles, {});
+  ASSERT_EQ(d.particle_files.size(), 2u);
+  const auto deck_dir = dir_.path() / "deck";
+  std::filesystem::create_directories(deck_dir);
+  auto json = nlohmann::json::parse(d.mpm_json);
+  ASSERT_EQ(json["particles"].size(), 2u);
+  json["analysis"]["resume"]["resume"] = false;
+  std::ofstream(deck_dir / "mpm.json") << json.dump(1);
+  std::ofstream(deck_dir / "mesh.txt") << d.mesh_txt;
+  std::ofstream(deck_dir / "entity_sets.json") << d.entity_sets_json;
+  for (const auto& [name, body] : d.particle_files) std::ofstream(deck_dir / name) << body;
+  const mpm::io::Deck fresh = mpm::io::read_deck(deck_dir, "mpm.json");
+  ASSERT_EQ(fresh.particles.size(), particles.size());
+  std::size_t of_material[2] = {0, 0};
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    EXPECT_EQ(fresh.particles[k].id, particles[k].id);
+    EXPECT_EQ(fresh.particles[k].material_id, particles[k].material_id) << "particle " << k;
+    EXPECT_CLOSE(fresh.particles[k].coord_x, particles[k].coord_x, 1e-12, 0);
+    EXPECT_CLOSE(fresh.particles[k].coord_y, particles[k].coord_y, 1e-12, 0);
+    ++of_material[std::min<std::size_t>(particles[k].material_id, 1)];
+  }
+  EXPECT_EQ(of_material[0], 16u);  // element 2 (material "1" -> the first id)
+  EXPECT_EQ(of_material[1], 32u);  // elements 1 and 3
 }
 
 TEST_F(MaterialMapping, PerMaterialOptionsOverrideOneMaterial) {
