@@ -15,6 +15,7 @@
 #include <initializer_list>
 #include <fstream>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "common/atomic_file.hpp"
@@ -35,11 +36,24 @@ std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 /// fem2mpm on the reference case with `extra` options, writing into dir/deck.
 ProgramResult fem2mpm(const fs::path& dir, const std::string& extra, const fs::path& disp = kCase / "disp.out",
-                      const fs::path& stress = kCase / "stress.out") {
-  return test_support::run_program((kBin / "fem2mpm").string() + " --model " + quoted(kCase / "model.json") + " --disp " +
+                      const fs::path& stress = kCase / "stress.out", const fs::path& model = kCase / "model.json") {
+  return test_support::run_program((kBin / "fem2mpm").string() + " --model " + quoted(model) + " --disp " +
                                        quoted(disp) + " --stress " + quoted(stress) + " --units kN --quiet --out " +
                                        quoted(dir / "deck") + " " + extra,
                                    dir);
+}
+
+/// The case's model.json with the first number after `key` (e.g. "\"crd\": [") replaced by `value`,
+/// written into dir; its path.
+fs::path model_with(const fs::path& dir, const std::string& key, const std::string& value) {
+  std::string text = test_support::read_text(kCase / "model.json");
+  const std::size_t key_at = text.find(key);
+  if (key_at == std::string::npos) throw std::logic_error("model.json has no " + key);
+  const std::size_t at = key_at + key.size(), end = text.find(',', at);
+  if (end == std::string::npos) throw std::logic_error("model.json: no ',' after " + key);
+  text.replace(at, end - at, value);
+  std::ofstream(dir / "model.json") << text;
+  return dir / "model.json";
 }
 
 /// The error is `code`, one line, contains `text`; nothing was written into dir/deck.
@@ -149,14 +163,7 @@ TEST(BadInputRegression, Fem2mpmRejectsALastRowCutMidNumber) {
 
 TEST(BadInputRegression, Fem2mpmJsonNumberOverflowNamesFileAndKey) {
   const auto dir = scratch("model_overflow");
-  std::string text = test_support::read_text(kCase / "model.json");
-  const auto at = text.find("\"crd\": [") + 8;
-  text.replace(at, text.find(',', at) - at, "1e400");
-  std::ofstream(dir / "model.json") << text;
-  const auto r = test_support::run_program((kBin / "fem2mpm").string() + " --model " + quoted(dir / "model.json") + " --disp " +
-                                               quoted(kCase / "disp.out") + " --stress " + quoted(kCase / "stress.out") +
-                                               " --units kN --out " + quoted(dir / "deck"),
-                                           dir);
+  const auto r = fem2mpm(dir, "", kCase / "disp.out", kCase / "stress.out", model_with(dir, "\"crd\": [", "1e400"));
   expect_one_line_error(r, 2, "model.json:", dir);
   EXPECT_NE(r.err.find("crd[0]: number overflow parsing '1e400'"), std::string::npos) << r.err;
 }
@@ -164,14 +171,7 @@ TEST(BadInputRegression, Fem2mpmJsonNumberOverflowNamesFileAndKey) {
 TEST(BadInputRegression, Fem2mpmGravityFromHugeBodyForcesIsNotWrittenAsNull) {
   // Found by the long fuzz run: bodyForces 1e308 (kN) gave gravity inf, written as null into mpm.json.
   const auto dir = scratch("body_force");
-  std::string text = test_support::read_text(kCase / "model.json");
-  const auto at = text.find("\"bodyForces\": [") + 15;
-  text.replace(at, text.find(',', at) - at, "1e308");
-  std::ofstream(dir / "model.json") << text;
-  const auto r = test_support::run_program((kBin / "fem2mpm").string() + " --model " + quoted(dir / "model.json") + " --disp " +
-                                               quoted(kCase / "disp.out") + " --stress " + quoted(kCase / "stress.out") +
-                                               " --units kN --out " + quoted(dir / "deck"),
-                                           dir);
+  const auto r = fem2mpm(dir, "", kCase / "disp.out", kCase / "stress.out", model_with(dir, "\"bodyForces\": [", "1e308"));
   expect_one_line_error(r, 2, "model.json: bodyForces: the gravity they give (body force / density) is inf, not finite; give --gravity", dir);
 }
 

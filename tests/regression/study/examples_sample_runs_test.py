@@ -27,6 +27,9 @@ import tempfile
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklist import Checklist  # noqa: E402
+
 
 def header_command(path, title):
     """The words on the line after '# <title>' in the example's header (None if there is none)."""
@@ -63,12 +66,8 @@ def main():
     ap.add_argument("--repo", required=True)
     args = ap.parse_args()
     examples = sorted(glob.glob(os.path.join(args.repo, "scripts", "examples", "*.tcl")))
-    failures = []
-
-    def check(what, ok, detail=""):
-        print("%s %s %s" % ("ok  " if ok else "FAIL", what, detail))
-        if not ok:
-            failures.append(what)
+    checks = Checklist()
+    check = checks.expect
 
     runs = 0
     for ex in examples:
@@ -121,11 +120,7 @@ def main():
         finally:
             shutil.rmtree(out, ignore_errors=True)
     check("at least two examples with a sample run", runs >= 2, str(runs))
-    if failures:
-        print("FAILED: " + ", ".join(failures))
-        return 1
-    print("all checks passed")
-    return 0
+    return checks.exit_status()
 
 
 if __name__ == "__main__":

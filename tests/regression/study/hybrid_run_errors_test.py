@@ -10,6 +10,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklist import Checklist  # noqa: E402
+
 NO_RECORDERS = """model basic -ndm 2 -ndf 2
 node 1 0 0
 node 2 1 0
@@ -36,7 +39,7 @@ def main():
     args = ap.parse_args()
     driver = os.path.join(args.repo, "scripts", "hybrid_run.py")
     tmp = tempfile.mkdtemp(prefix="hybrid_run_errors_")
-    failures = []
+    checks = Checklist()
 
     def case(what, argv, expect):
         out = os.path.join(tmp, "out_" + what.replace(" ", "_"))
@@ -44,9 +47,7 @@ def main():
                            stderr=subprocess.PIPE, text=True)
         err = [ln for ln in r.stderr.splitlines() if ln.strip()]
         ok = r.returncode == 2 and len(err) == 1 and expect in err[0] and not os.path.exists(os.path.join(out, "summary.md"))
-        print("%s %s: exit %d, stderr %r" % ("ok  " if ok else "FAIL", what, r.returncode, r.stderr.strip()))
-        if not ok:
-            failures.append(what)
+        checks.expect(what, ok, ": exit %d, stderr %r" % (r.returncode, r.stderr.strip()))
 
     bad = os.path.join(tmp, "no_recorders.tcl")
     with open(bad, "w") as f:
@@ -60,11 +61,7 @@ def main():
     case("contract not met", [bad, "--transfer", "0"], "did not write disp.out")
     case("transfer after the last row", [good, "--transfer", "1.5"], "recorded only to t = 0 s")
     shutil.rmtree(tmp, ignore_errors=True)
-    if failures:
-        print("FAILED: " + ", ".join(failures))
-        return 1
-    print("all checks passed")
-    return 0
+    return checks.exit_status()
 
 
 if __name__ == "__main__":

@@ -31,6 +31,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklist import Checklist  # noqa: E402
+
 
 def read_metrics(path):
     with open(path) as f:
@@ -47,13 +50,8 @@ def main():
             print("FAIL: %s not built in %s" % (exe, args.bin))
             return 1
     out = tempfile.mkdtemp(prefix="study_reduced_")
-    failures = []
-
-    def check(what, value, lo, hi):
-        ok = lo <= value <= hi
-        print("%s %s = %.6g (band [%g, %g])" % ("ok  " if ok else "FAIL", what, value, lo, hi))
-        if not ok:
-            failures.append(what)
+    checks = Checklist()
+    check = checks.within
 
     try:
         t0 = time.perf_counter()
@@ -81,11 +79,7 @@ def main():
         check("fem PE/PE0 at 1 s", fem_at[1.0]["pe_ratio"], 0.85, 0.99)
     finally:
         shutil.rmtree(out, ignore_errors=True)
-    if failures:
-        print("FAILED: " + ", ".join(failures))
-        return 1
-    print("all checks passed")
-    return 0
+    return checks.exit_status()
 
 
 if __name__ == "__main__":

@@ -92,6 +92,13 @@ INSTANTIATE_TEST_SUITE_P(
 
 // --- Pure FLIP --------------------------------------------------------------------------------------
 
+const auto kEveryCellAndScheme = testing::Combine(testing::Values(CellType::Linear4, CellType::Gimp16),
+                                                  testing::Values(Scheme::USF, Scheme::USL, Scheme::MUSL));
+
+std::string cell_and_scheme_name(const testing::TestParamInfo<std::tuple<CellType, Scheme>>& info) {
+  return std::string(std::get<0>(info.param) == CellType::Linear4 ? "ED2Q4_" : "ED2Q16G_") + scheme_name(std::get<1>(info.param));
+}
+
 class SlidingBlockFlip : public testing::TestWithParam<std::tuple<CellType, Scheme>> {};
 
 TEST_P(SlidingBlockFlip, FollowsCoulombFrictionWithoutPoissonCoupling) {
@@ -107,13 +114,7 @@ TEST_P(SlidingBlockFlip, FollowsCoulombFrictionWithoutPoissonCoupling) {
   EXPECT_CLOSE(m.vx, a * m.t, 0.0, 0.03);
 }
 
-INSTANTIATE_TEST_SUITE_P(Schemes, SlidingBlockFlip,
-                         testing::Combine(testing::Values(CellType::Linear4, CellType::Gimp16),
-                                          testing::Values(Scheme::USF, Scheme::USL, Scheme::MUSL)),
-                         [](const testing::TestParamInfo<SlidingBlockFlip::ParamType>& info) {
-                           return std::string(std::get<0>(info.param) == CellType::Linear4 ? "ED2Q4_" : "ED2Q16G_") +
-                                  scheme_name(std::get<1>(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Schemes, SlidingBlockFlip, kEveryCellAndScheme, cell_and_scheme_name);
 
 // --- APIC -------------------------------------------------------------------------------------------
 
@@ -134,13 +135,7 @@ TEST_P(SlidingBlockApic, FollowsCoulombFrictionWithoutPoissonCoupling) {
   EXPECT_CLOSE(m.vx, a * m.t, 0.0, 0.03);
 }
 
-INSTANTIATE_TEST_SUITE_P(Schemes, SlidingBlockApic,
-                         testing::Combine(testing::Values(CellType::Linear4, CellType::Gimp16),
-                                          testing::Values(Scheme::USF, Scheme::USL, Scheme::MUSL)),
-                         [](const testing::TestParamInfo<SlidingBlockApic::ParamType>& info) {
-                           return std::string(std::get<0>(info.param) == CellType::Linear4 ? "ED2Q4_" : "ED2Q16G_") +
-                                  scheme_name(std::get<1>(info.param));
-                         });
+INSTANTIATE_TEST_SUITE_P(Schemes, SlidingBlockApic, kEveryCellAndScheme, cell_and_scheme_name);
 
 TEST(SlidingBlock, SoftBlockUnderFlip) {
   // The soft 1 m block of the first version of this test (E = 1 MPa), pure FLIP, 1 s.
