@@ -30,7 +30,10 @@ std::optional<double> CommandArgs::parse_number(std::string_view text) {
   errno = 0;
   const double value = std::strtod(s.c_str(), &end);
   while (end && (*end == ' ' || *end == '\t')) ++end;
-  if (end == s.c_str() || *end != '\0' || errno == ERANGE) return std::nullopt;
+  if (end == s.c_str() || *end != '\0') return std::nullopt;
+  // ERANGE: an overflow (+-HUGE_VAL) is an error; an underflow (1e-310, 1e-400) is the nearest
+  // denormal or zero, as Tcl reads it.
+  if (errno == ERANGE && std::isinf(value)) return std::nullopt;
   return value;
 }
 

@@ -66,6 +66,10 @@ TEST(CommandArgs, NumbersMustBeFinite) {
   EXPECT_FALSE(common::CommandArgs::parse_finite_number("inf"));
   EXPECT_TRUE(common::CommandArgs::parse_number("inf"));  // syntax only
   EXPECT_FALSE(common::CommandArgs::parse_number("1e400"));
+  EXPECT_FALSE(common::CommandArgs::parse_number("-1e400"));
+  // Underflow is not an error (Tcl reads 1e-310 as a denormal and 1e-400 as 0).
+  EXPECT_EQ(common::CommandArgs::parse_number("1e-310"), 1e-310);
+  EXPECT_EQ(common::CommandArgs::parse_number("-1e-400"), -0.0);
 }
 
 TEST(JsonFile, OverflowNamesTheKeyPath) {
