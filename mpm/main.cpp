@@ -12,6 +12,7 @@
 #include "common/printable_text.hpp"
 #include "mpm/core/simulation.hpp"
 #include "mpm/io/deck_reader.hpp"
+#include "mpm/io/particle_table.hpp"
 #include "mpm/io/progress.hpp"
 #include "mpm/io/results.hpp"
 
@@ -51,6 +52,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
 }  // namespace
 
 int main(int argc, char** argv) {
+  mpm::io::skip_hdf5_exit_cleanup();
   CLI::App app{"mpm: explicit material point method (CB-Geo MPM input decks and particle files)"};
   std::string working_dir, input_file = "mpm.json";
   int threads = 0;

@@ -250,4 +250,6 @@ std::string particle_file_name(long long step, long long nsteps) {
   return buffer;
 }
 
+void skip_hdf5_exit_cleanup() { H5dont_atexit(); }
+
 }  // namespace mpm::io

@@ -75,4 +75,9 @@ std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std:
 /// int(log10(nsteps)) + 1 digits + ".h5" (e.g. step 250 of 1001 -> "particles0250.h5").
 std::string particle_file_name(long long step, long long nsteps);
 
+/// For a program's main, before any HDF5 call: HDF5's own clean-up at exit is skipped. Every file this
+/// project opens is closed by its owner; the library's atexit pass would only retry a corrupt file it
+/// could not close and print "HDF5: infinite loop closing library" after the program's one-line error.
+void skip_hdf5_exit_cleanup();
+
 }  // namespace mpm::io
