@@ -34,7 +34,7 @@
 # y-fixed, a roller line, and the MPM base is made frictional, mu = tan 30 deg).
 #
 # Usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1?
-#        ?-motion FILE?
+#        ?-plastic 1? ?-motion FILE?
 # Files in <outdir>: the hybrid_run.py contract (model.json, disp.out, vel.out, stress.out, mesh_quality.out,
 # every -record s) and crest.out (`-time`, every step: ux uy of the left shoulder (28, 14), the crest centre
 # (36, 14) and the right shoulder (44, 14)), crest_accel.out (the same nodes' ux accelerations, absolute:
@@ -42,17 +42,22 @@
 # embankment_accel.out (ax of every embankment node, every step: the sliding mass's mean acceleration for
 # the decoupled Newmark analysis), points.txt (the node tags of those points).
 source [file join [file dirname [info script]] .. examples hybrid_stages.tcl]
-set usage "usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1? ?-motion FILE?"
+set usage "usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1? ?-plastic 1? ?-motion FILE?"
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} { error "shaken_slope.tcl: missing <outdir>; $usage" }
 set outdir [lindex $argv 0]
-# -scale (>= 0) and -motion (a file) are read here; the numbers > 0 by parse_options
+# -scale (>= 0), -plastic (0: the materials stay elastic while shaken, for the decoupled Newmark analysis's
+# seismic coefficient) and -motion (a file) are read here; the numbers > 0 by parse_options
 set scale 1.0
+set plastic 1
 set motion [file join [file dirname [info script]] motion vel.txt]
 set rest {}
 foreach {key value} [lrange $argv 1 end] {
     if {$key eq "-scale"} {
         if {![string is double -strict $value] || !($value >= 0)} { error "shaken_slope.tcl: expected a number >= 0 after '-scale', got '$value'" }
         set scale $value
+    } elseif {$key eq "-plastic"} {
+        if {$value ni {0 1}} { error "shaken_slope.tcl: expected 0 or 1 after '-plastic', got '$value'" }
+        set plastic $value
     } elseif {$key eq "-motion"} {
         if {![file readable $value]} { error "shaken_slope.tcl: -motion '$value': no such readable file" }
         set motion $value
@@ -100,8 +105,10 @@ gravity_stage
 loadConst -time 0.0
 remove loadPattern 1
 wipeAnalysis
-updateMaterialStage -material 1 -stage 1
-updateMaterialStage -material 2 -stage 1
+if {$plastic} {
+    updateMaterialStage -material 1 -stage 1
+    updateMaterialStage -material 2 -stage 1
+}
 
 # compliant base: Lysmer-Kuhlemeyer dashpot on a fixed dummy node (the next tag after the mesh, so that the
 # contract's -nodeRange covers it) and the Joyner-Chen force

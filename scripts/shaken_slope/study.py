@@ -3,7 +3,8 @@
 the synthetic record (motion/), and the same model unshaken, each through the whole chain (fem_tcl to the
 end of the shaking, fem2mpm, mpm to rest: scripts/hybrid_run.py); then the pseudo-static limit equilibrium
 (pseudo_static.py: Bishop circles, k_y) and Newmark's sliding block (sliding_block.py) for the same slope,
-with the outcrop record and with the FEM's mean acceleration of the sliding mass.
+with the outcrop record and with the mean acceleration of the sliding mass in the FEM (a third, elastic FEM
+run, -plastic 0: the decoupled analysis of Makdisi & Seed 1978; and the plastic run's own).
 
     /usr/bin/python3 scripts/shaken_slope/study.py [--out results/shaken_slope] [--bin build/bin]
                      [--figure docs/study/shaken_slope.png] [--quick]
@@ -153,18 +154,29 @@ def main(argv=None):
     keep = t_rec <= s["tend"] + 1e-9
     t_rec, a_rec, v_rec = t_rec[keep], a_rec[keep], v_rec[keep]
     fem = {c: crest_history(os.path.join(out, c, "fem")) for c in commands}
+    elastic_dir = os.path.join(out, "elastic")
+    elastic_cmd = [os.path.join(args.bin or os.path.join(REPO, "build", "bin"), "fem_tcl"),
+                   os.path.join(HERE, "shaken_slope.tcl"), elastic_dir, "-cell", repr(s["cell"]), "-dt", repr(s["dt"]),
+                   "-tend", repr(s["tend"]), "-plastic", "0"]
+    print("study.py: elastic (decoupled Newmark): %s" % " ".join(elastic_cmd), flush=True)
+    os.makedirs(elastic_dir, exist_ok=True)
+    pipeline.run_cmd(elastic_cmd, logfile=os.path.join(elastic_dir, "fem_tcl.log"))
     newmark = {}
     for face, sign, col in (("left", 1.0, 0), ("right", -1.0, 2)):
         _, d_out = sliding_block.newmark_sliding(t_rec, sign * a_rec, ky * G)
         ta, am, n_in = sliding_mass_acceleration(os.path.join(out, "shaken", "fem"), circle, -1 if face == "left" else 1)
         _, d_fem = sliding_block.newmark_sliding(ta, sign * am, ky * G)
+        te, ae, _ = sliding_mass_acceleration(elastic_dir, circle, -1 if face == "left" else 1)
+        _, d_el = sliding_block.newmark_sliding(te, sign * ae, ky * G)
         perm = [fem[c]["ux"][-1, col] - fem[c]["ux"][0, col] for c in ("shaken", "unshaken")]
         newmark[face] = {"outcrop_record_m": float(d_out[-1]), "fem_sliding_mass_accel_m": float(d_fem[-1]),
                          "sliding_mass_peak_accel_g": float(np.max(np.abs(am)) / G), "sliding_mass_nodes": n_in,
+                         "elastic_sliding_mass_accel_m": float(d_el[-1]),
+                         "elastic_sliding_mass_peak_accel_g": float(np.max(np.abs(ae)) / G),
                          "fem_shoulder_ux_shaken_m": float(perm[0]), "fem_shoulder_ux_unshaken_m": float(perm[1]),
                          "fem_shoulder_uy_shaken_m": float(fem["shaken"]["uy"][-1, col] - fem["shaken"]["uy"][0, col]),
                          "fem_shoulder_uy_unshaken_m": float(fem["unshaken"]["uy"][-1, col] - fem["unshaken"]["uy"][0, col]),
-                         "history": {"t_out": t_rec, "d_out": d_out, "t_fem": ta, "d_fem": d_fem}}
+                         "history": {"t_out": t_rec, "d_out": d_out, "t_fem": ta, "d_fem": d_fem, "t_el": te, "d_el": d_el}}
 
     # --- MPM: runout and deposits
     mpm = {}
@@ -199,12 +211,14 @@ def write_table(out, sm):
              "Static FS %.3f, k_y %.4f (Bishop, pseudo-static); record PGA %.2f g."
              % (sm["pseudo_static"]["static_fs"], sm["pseudo_static"]["k_y"], sm["motion"]["pga_g"]), "",
              "| face | FEM shoulder ux shaken (m) | unshaken (m) | FEM uy shaken (m) | Newmark, outcrop record (m) | "
-             "Newmark, FEM sliding-mass accel (m) | sliding-mass peak accel (g) |", "|---|---|---|---|---|---|---|"]
+             "Newmark, elastic FEM sliding-mass accel (m) | its peak (g) | Newmark, plastic FEM sliding-mass accel (m) | its peak (g) |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for face in ("left", "right"):
         d = nm[face]
-        lines.append("| %s | %.4f | %.4f | %.4f | %.4f | %.4f | %.3f |" % (
+        lines.append("| %s | %.4f | %.4f | %.4f | %.4f | %.4f | %.3f | %.4f | %.3f |" % (
             face, d["fem_shoulder_ux_shaken_m"], d["fem_shoulder_ux_unshaken_m"], d["fem_shoulder_uy_shaken_m"],
-            d["outcrop_record_m"], d["fem_sliding_mass_accel_m"], d["sliding_mass_peak_accel_g"]))
+            d["outcrop_record_m"], d["elastic_sliding_mass_accel_m"], d["elastic_sliding_mass_peak_accel_g"],
+            d["fem_sliding_mass_accel_m"], d["sliding_mass_peak_accel_g"]))
     lines += ["", "| MPM | runout since transfer (m) | moving mass | largest speed at the end (m/s) |", "|---|---|---|---|"]
     for c, d in sm["mpm"].items():
         lines.append("| %s | %.4f | %.1f %% | %.3g |" % (c, d["runout_m"], 100 * d["moved_mass_fraction"],
@@ -236,7 +250,7 @@ def figure(out, copy_to, s, t_rec, a_rec, v_rec, fem, newmark, mpm, ky):
                     label="FEM %s shoulder, %s (downslope ux rel. to base)" % (face, c))
         h = newmark[face]["history"]
         ax.plot(h["t_out"], h["d_out"], "--", color=colour, lw=0.9, label="Newmark, outcrop record (%s face)" % face)
-        ax.plot(h["t_fem"], h["d_fem"], "-.", color=colour, lw=0.9, label="Newmark, FEM sliding-mass accel (%s)" % face)
+        ax.plot(h["t_el"], h["d_el"], "-.", color=colour, lw=0.9, label="Newmark, elastic-FEM sliding-mass accel (%s)" % face)
     ax.set_xlabel("t (s)")
     ax.set_ylabel("downslope displacement (m)")
     ax.grid(alpha=0.3)
@@ -250,6 +264,13 @@ def figure(out, copy_to, s, t_rec, a_rec, v_rec, fem, newmark, mpm, ky):
         p = mpm[c]["particles_state"]
         xs, ys = metrics.particle_profile(p["x"], p["y"], width)
         ax.plot(xs, ys, color=colour, lw=1.0, label="MPM deposit, %s (runout %.2f m)" % (c, mpm[c]["runout_m"]))
+    pu, pk = mpm["unshaken"]["particles_state"], mpm["shaken"]["particles_state"]
+    xu, yu = metrics.particle_profile(pu["x"], pu["y"], width)
+    xk, yk = metrics.particle_profile(pk["x"], pk["y"], width)
+    axd = ax.twinx()
+    axd.plot(xk, yk - np.interp(xk, xu, yu), color="k", lw=0.8, ls="--", label="shaken - unshaken")
+    axd.set_ylabel("surface difference, shaken - unshaken (m)")
+    axd.legend(loc="lower right", fontsize=7)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("surface y (m)")
     ax.set_ylim(D - 1, D + H + 1.5)
