@@ -30,9 +30,13 @@ SSPquad::SSPquad(int tag, std::array<domain::Node*, 4> nodes, const materials::N
   }
   if (!(thickness > 0.0)) throw common::InputError("element SSPquad " + std::to_string(tag), "expected thickness > 0");
   compute_stabilization();
+  refresh_mass();
+}
+
+void SSPquad::refresh_mass() {
+  const double rho = material_->density();
   for (int i = 0; i < 4; ++i) {
-    const double w = material_->density() * thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
-    mass_[2 * i] = mass_[2 * i + 1] = w;
+    mass_[2 * i] = mass_[2 * i + 1] = rho * thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
   }
 }
 
@@ -112,13 +116,7 @@ const Matrix8& SSPquad::elastic_stiffness() {
   return Kel_;
 }
 
-const Vector8& SSPquad::lumped_mass() {
-  const double rho = material_->density();
-  for (int i = 0; i < 4; ++i) {
-    mass_[2 * i] = mass_[2 * i + 1] = rho * thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
-  }
-  return mass_;
-}
+const Vector8& SSPquad::lumped_mass() { return mass_; }
 
 const Vector8& SSPquad::resisting_force() {
   // Kstab u = Mben^T (FCF (Mben u)) and 4 J0 t B0^T sigma, each with its matrix's structure
@@ -196,6 +194,7 @@ std::unique_ptr<domain::ElementState> SSPquad::save_state() const {
 
 void SSPquad::restore_state(const domain::ElementState& state) {
   restore_material_points(std::span(&material_, 1), state);
+  refresh_mass();
 }
 
 }  // namespace fem::elements

@@ -39,8 +39,18 @@ class SSPquad final : public domain::Element {
   domain::Vector2 body_force() const override { return body_; }
 
   std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
-  bool set_parameter(std::string_view name, double value) override { return material_->set_parameter(name, value); }
-  bool update_material_stage(int stage) override { return material_->update_stage(stage); }
+  // the lumped mass is kept (lumped_mass() is read every iteration) and refreshed wherever the
+  // material's density may change (setParameter rho, a stage, a restored state)
+  bool set_parameter(std::string_view name, double value) override {
+    const bool known = material_->set_parameter(name, value);
+    refresh_mass();
+    return known;
+  }
+  bool update_material_stage(int stage) override {
+    const bool known = material_->update_stage(stage);
+    refresh_mass();
+    return known;
+  }
   bool reduce_strength(double factor) override;
   std::unique_ptr<domain::ElementState> save_state() const override;
   void restore_state(const domain::ElementState& state) override;
@@ -50,6 +60,7 @@ class SSPquad final : public domain::Element {
 
  private:
   void compute_stabilization();
+  void refresh_mass();
 
   std::unique_ptr<materials::NDMaterial> material_;
   int material_tag_;

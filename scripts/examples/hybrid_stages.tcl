@@ -45,12 +45,9 @@ proc gravity_stage {} {
     if {[analyze 1] != 0} { error "gravity stage: the static step failed" }
 }
 
-# Stage 2: MohrCoulomb (stage 1) for the materials given, Newmark average acceleration from t = 0 to tend in
-# steps of dt (halved up to 6 times where a step fails). The recorders are made here, at t = 0.
-proc collapse_stage {materials outdir tend dt drec} {
-    loadConst -time 0.0
-    wipeAnalysis
-    foreach m $materials { updateMaterialStage -material $m -stage 1 }
+# The transient analysis of the plastic stages: Newmark average acceleration, KrylovNewton on the elastic
+# tangent (factored once per dt), NormDispIncr 1e-6.
+proc transient_analysis {} {
     constraints Transformation
     numberer RCM
     system UmfPack
@@ -58,6 +55,15 @@ proc collapse_stage {materials outdir tend dt drec} {
     algorithm KrylovNewton -elasticTangent -maxDim 6
     integrator Newmark 0.5 0.25
     analysis Transient
+}
+
+# Stage 2: MohrCoulomb (stage 1) for the materials given, Newmark average acceleration from t = 0 to tend in
+# steps of dt (halved up to 6 times where a step fails). The recorders are made here, at t = 0.
+proc collapse_stage {materials outdir tend dt drec} {
+    loadConst -time 0.0
+    wipeAnalysis
+    foreach m $materials { updateMaterialStage -material $m -stage 1 }
+    transient_analysis
     record_for_hybrid $outdir $drec
     record
     set t [advance_to $tend $dt "collapse stage"]

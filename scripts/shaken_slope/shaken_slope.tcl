@@ -127,13 +127,7 @@ set pi [expr {acos(-1.0)}]
 rayleigh [expr {2.0 * 0.02 * 2.0 * $pi * 2.0}] 0.0 0.0 0.0
 
 # stage 2: plastic, shaken
-constraints Transformation
-numberer RCM
-system UmfPack
-test NormDispIncr 1.0e-6 25
-algorithm KrylovNewton -elasticTangent -maxDim 6
-integrator Newmark 0.5 0.25
-analysis Transient
+transient_analysis
 record_for_hybrid $outdir $opt(-record) $soil
 recorder Node -file [file join $outdir crest.out] -time -node {*}$crest -dof 1 2 disp
 recorder Node -file [file join $outdir crest_accel.out] -time -node {*}$crest -dof 1 accel
