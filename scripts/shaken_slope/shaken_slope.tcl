@@ -28,10 +28,11 @@
 # 2 Hz (no stiffness-proportional term: it would follow the plastic tangent and refactor every iteration),
 # from t = 0 to -tend (steps of -dt halved where one fails).
 #
-# Sample run (the study's shaken case; figures, summary.md in results/shaken_slope/shaken):
-#   scripts/hybrid_run.py scripts/shaken_slope/shaken_slope.tcl --transfer 12 --duration 3 --out results/shaken_slope/shaken --units kN --ppd 2 --left-wall roller --right-wall roller --base friction --base-friction 0.58
-# (the periodic sides have no CB-Geo counterpart: fem2mpm warns and the walls are given; the base nodes are
-# y-fixed, a roller line, and the MPM base is made frictional, mu = tan 30 deg).
+# Sample run (the study's shaken case, about 30 s; figures, summary.md in results/shaken_slope/shaken):
+#   scripts/hybrid_run.py scripts/shaken_slope/shaken_slope.tcl --transfer 12 --duration 3 --out results/shaken_slope/shaken --ppd 2 --units kN --left-wall roller --right-wall roller --base friction --base-friction 0.58 --base-y 0 --cell-size 1 --extent 0 72 -1 18 -- -cell 1 -dt 0.005 -tend 12 -scale 1
+# (the periodic sides have no CB-Geo counterpart: fem2mpm warns, and roller walls are put at x = 0 and 72;
+# the base nodes are y-fixed, a roller line, and the MPM base is made frictional, mu = tan 30 deg). The
+# whole study (shaken, unshaken, elastic, Newmark): scripts/shaken_slope/study.py, docs/study/shaken_slope.md.
 #
 # Usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1?
 #        ?-plastic 1? ?-motion FILE?
@@ -61,8 +62,10 @@ foreach {key value} [lrange $argv 1 end] {
     } elseif {$key eq "-motion"} {
         if {![file readable $value]} { error "shaken_slope.tcl: -motion '$value': no such readable file" }
         set motion $value
-    } else {
+    } elseif {$key in {-cell -tend -dt -record}} {
         lappend rest $key $value
+    } else {
+        error "shaken_slope.tcl: unknown option '$key' (known: -cell -dt -motion -plastic -record -scale -tend); $usage"
     }
 }
 array set opt {-cell 1.0 -tend 12.0 -dt 0.005 -record 0.05}
