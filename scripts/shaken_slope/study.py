@@ -16,8 +16,8 @@ shaken_slope.png (record, crest displacement histories with the Newmark ones, MP
 """
 import argparse
 import json
-import math
 import os
+import shutil
 import subprocess
 import sys
 
@@ -68,11 +68,6 @@ def run_case(name, scale, s, out, bins):
     if r.returncode != 0:
         sys.exit("study.py: %s: hybrid_run.py failed (exit %d)" % (name, r.returncode))
     return cmd
-
-
-def points(fem_dir):
-    with open(os.path.join(fem_dir, "points.txt")) as f:
-        return {k: int(v) for k, v in (line.split() for line in f if line.strip())}
 
 
 def crest_history(fem_dir):
@@ -280,7 +275,6 @@ def figure(out, copy_to, s, t_rec, a_rec, v_rec, fem, newmark, mpm, ky):
     fig.tight_layout()
     path = plots.save(fig, os.path.join(out, "shaken_slope.png"))
     if copy_to:
-        import shutil
         shutil.copyfile(path, copy_to + ".tmp")
         os.replace(copy_to + ".tmp", copy_to)
 

@@ -12,7 +12,7 @@ claims, each an assertion that fails when the chain breaks:
 - fem2mpm carried the model over: the dashpot skipped with its warning, roller walls at x = 0 and 72 and a
   frictional base at y = 0 in report.json, and no particle beyond the walls at the end of the MPM run
   (half a cell); the shaken deposit's runout is at least the unshaken one's.
-Measured: ~13 s wall on the loaded 2-core machine.
+Measured: 16-22 s wall on the loaded 2-core machine.
 """
 import argparse
 import json
