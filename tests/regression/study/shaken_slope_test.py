@@ -37,7 +37,7 @@ def main():
             failures.append(what)
 
     try:
-        r = subprocess.run([sys.executable, os.path.join(args.repo, "scripts", "shaken_slope", "study.py"), "--quick",
+        r = subprocess.run([sys.executable, os.path.join(args.repo, "scripts", "shaken_slope", "study.py"), "--quick", "--no-figure",
                             "--out", scratch, "--bin", args.bin], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         print(r.stdout[-3000:])
         if r.returncode != 0:
