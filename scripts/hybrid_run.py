@@ -247,8 +247,10 @@ def write_summary(out, args, command, forward, script_args, walls, rows, directi
     lines += ["## Result at t = %g s" % end["time"], "",
               "| | |", "|---|---|",
               "| runout (largest horizontal travel since the transfer) | %.3g m |" % end["runout"],
-              "| front of the moving mass (travel > %g m), moving %s | x = %.4g m |"
-              % (args.moved, "right (+x)" if direction > 0 else "left (-x)", end["front_x"]),
+              ("| front of the moving mass (travel > %g m), moving %s | x = %.4g m |"
+               % (args.moved, "right (+x)" if direction > 0 else "left (-x)", end["front_x"]))
+              if np.isfinite(end["front_x"]) else
+              "| front of the moving mass | none: no particle travelled more than %g m (--moved) |" % args.moved,
               "| mass moving | %.1f %% |" % (100 * end["moved_mass_fraction"]),
               "| height (99.5th percentile of y) at T -> end | %.4g m -> %.4g m |" % (rows[0]["height"], end["height"]),
               "| potential energy released | %.4g kJ/m |" % ((rows[0]["potential_energy"] - end["potential_energy"]) / 1e3),
@@ -340,8 +342,10 @@ def main(argv=None):
     except pipeline.PipelineError as e:
         print("%s: error: %s: %s" % (PROG, stage, e), file=sys.stderr)
         return 2 if e.bad_input else 1
-    print("%s: done: runout %.3g m, front x = %.4g m, %.0f %% of the mass moving at t = %g s; %s"
-          % (PROG, rows[-1]["runout"], rows[-1]["front_x"], 100 * rows[-1]["moved_mass_fraction"], rows[-1]["time"],
+    front = ("front x = %.4g m" % rows[-1]["front_x"]) if np.isfinite(rows[-1]["front_x"]) else \
+        "no moving front (no travel above %g m)" % args.moved
+    print("%s: done: runout %.3g m, %s, %.0f %% of the mass moving at t = %g s; %s"
+          % (PROG, rows[-1]["runout"], front, 100 * rows[-1]["moved_mass_fraction"], rows[-1]["time"],
              os.path.join(out, "summary.md")), flush=True)
     return 0
 

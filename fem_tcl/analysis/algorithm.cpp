@@ -90,8 +90,7 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     ++iterations;
     const TestResult result = test.test(dU, p.unbalance());
     if (result != TestResult::Continue) return result == TestResult::Converged;
-    p.solve(p.unbalance(), r_new);
-    if (k >= m) {  // restart the subspace with a fresh tangent
+    if (k >= m) {  // restart the subspace with a fresh tangent (one solve, on the fresh tangent only)
       k = 0;
       p.form_tangent();
       p.solve(p.unbalance(), r_new);
@@ -99,6 +98,7 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
       dU = r_new;
       continue;
     }
+    p.solve(p.unbalance(), r_new);
     ws.d[k] = dU;
     ws.w[k] = r - r_new;
     ++k;

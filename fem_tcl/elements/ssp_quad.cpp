@@ -30,9 +30,13 @@ SSPquad::SSPquad(int tag, std::array<domain::Node*, 4> nodes, const materials::N
   }
   if (!(thickness > 0.0)) throw common::InputError("element SSPquad " + std::to_string(tag), "expected thickness > 0");
   compute_stabilization();
+  refresh_mass();
+}
+
+void SSPquad::refresh_mass() {
+  const double rho = material_->density();
   for (int i = 0; i < 4; ++i) {
-    const double w = material_->density() * thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
-    mass_[2 * i] = mass_[2 * i + 1] = w;
+    mass_[2 * i] = mass_[2 * i + 1] = rho * thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
   }
 }
 
@@ -52,6 +56,7 @@ void SSPquad::compute_stabilization() {
   B0_.setZero();
   for (int a = 0; a < 4; ++a) {
     const double gamma = 0.25 * (h[a] - hx * dN(a, 0) - hy * dN(a, 1));
+    gamma_[a] = gamma;
     B0_(0, 2 * a) = dN(a, 0);
     B0_(1, 2 * a + 1) = dN(a, 1);
     B0_(2, 2 * a) = dN(a, 1);
@@ -77,11 +82,20 @@ void SSPquad::compute_stabilization() {
   FCF(1, 0) = (C(1, 0) - (C(0, 0) + C(1, 1)) + C(0, 1)) * Hst;
   FCF(1, 1) = (C(1, 1) - (C(0, 1) + C(1, 0)) + C(0, 0)) * Htt;
   Kstab_ = Mben.transpose() * FCF * Mben;
+  FCF_ = FCF;
+  dN_ = dN;
 }
 
 void SSPquad::update() {
-  const Vector8 u = trial_displacement();
-  material_->set_trial_strain(B0_ * u);
+  // strain B0 u, with B0's structure (rows dN_x, dN_y and the shear row)
+  materials::Vector3 strain = materials::Vector3::Zero();
+  for (int a = 0; a < 4; ++a) {
+    const domain::Vector2& u = nodes()[a]->disp;
+    strain[0] += dN_(a, 0) * u[0];
+    strain[1] += dN_(a, 1) * u[1];
+    strain[2] += dN_(a, 1) * u[0] + dN_(a, 0) * u[1];
+  }
+  material_->set_trial_strain(strain);
 }
 
 const Matrix8& SSPquad::tangent_stiffness() {
@@ -102,23 +116,19 @@ const Matrix8& SSPquad::elastic_stiffness() {
   return Kel_;
 }
 
-const Vector8& SSPquad::lumped_mass() {
-  const double rho = material_->density();
-  for (int i = 0; i < 4; ++i) {
-    mass_[2 * i] = mass_[2 * i + 1] = rho * thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
-  }
-  return mass_;
-}
+const Vector8& SSPquad::lumped_mass() { return mass_; }
 
 const Vector8& SSPquad::resisting_force() {
-  const Vector8 u = trial_displacement();
-  force_.noalias() = Kstab_ * u;
-  force_.noalias() += (4.0 * thickness_ * J0_) * (B0_.transpose() * material_->stress());
+  // Kstab u = Mben^T (FCF (Mben u)) and 4 J0 t B0^T sigma, each with its matrix's structure
+  Eigen::Vector2d hourglass = Eigen::Vector2d::Zero();
+  for (int a = 0; a < 4; ++a) hourglass += gamma_[a] * nodes()[a]->disp;
+  const Eigen::Vector2d q = FCF_ * hourglass;
+  const materials::Vector3 s = (4.0 * thickness_ * J0_) * material_->stress();
   const domain::Vector2 b = self_weight_applied() ? applied_body() : body_;
-  for (int i = 0; i < 4; ++i) {
-    const double w = thickness_ * (J0_ + J1_ * kXi[i] + J2_ * kEta[i]);
-    force_[2 * i] -= b[0] * w;
-    force_[2 * i + 1] -= b[1] * w;
+  for (int a = 0; a < 4; ++a) {
+    const double w = thickness_ * (J0_ + J1_ * kXi[a] + J2_ * kEta[a]);
+    force_[2 * a] = gamma_[a] * q[0] + dN_(a, 0) * s[0] + dN_(a, 1) * s[2] - b[0] * w;
+    force_[2 * a + 1] = gamma_[a] * q[1] + dN_(a, 1) * s[1] + dN_(a, 0) * s[2] - b[1] * w;
   }
   force_ -= element_load();
   return force_;
@@ -184,6 +194,7 @@ std::unique_ptr<domain::ElementState> SSPquad::save_state() const {
 
 void SSPquad::restore_state(const domain::ElementState& state) {
   restore_material_points(std::span(&material_, 1), state);
+  refresh_mass();
 }
 
 }  // namespace fem::elements

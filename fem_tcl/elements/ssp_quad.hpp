@@ -39,8 +39,18 @@ class SSPquad final : public domain::Element {
   domain::Vector2 body_force() const override { return body_; }
 
   std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
-  bool set_parameter(std::string_view name, double value) override { return material_->set_parameter(name, value); }
-  bool update_material_stage(int stage) override { return material_->update_stage(stage); }
+  // the lumped mass is kept (lumped_mass() is read every iteration) and refreshed wherever the
+  // material's density may change (setParameter rho, a stage, a restored state)
+  bool set_parameter(std::string_view name, double value) override {
+    const bool known = material_->set_parameter(name, value);
+    refresh_mass();
+    return known;
+  }
+  bool update_material_stage(int stage) override {
+    const bool known = material_->update_stage(stage);
+    refresh_mass();
+    return known;
+  }
   bool reduce_strength(double factor) override;
   std::unique_ptr<domain::ElementState> save_state() const override;
   void restore_state(const domain::ElementState& state) override;
@@ -50,20 +60,28 @@ class SSPquad final : public domain::Element {
 
  private:
   void compute_stabilization();
+  void refresh_mass();
 
   std::unique_ptr<materials::NDMaterial> material_;
   int material_tag_;
   double thickness_;
   domain::Vector2 body_;
   double J0_ = 0, J1_ = 0, J2_ = 0;
+  // The factors of B0 and Kstab = Mben^T FCF Mben, for the products of every iteration (strain, internal
+  // force) without the dense 3x8 and 8x8 matrices: B0 holds the shape-function gradients dN_ (x, y per
+  // node), Mben the hourglass vector gamma_ in each direction (McGann et al. 2012, eqs. 22 and 33). They
+  // and the other members read every iteration come before the 8x8 matrices (fewer cache lines per element).
+  Eigen::Matrix<double, 4, 2> dN_ = Eigen::Matrix<double, 4, 2>::Zero();
+  Eigen::Vector4d gamma_ = Eigen::Vector4d::Zero();
+  Eigen::Matrix2d FCF_ = Eigen::Matrix2d::Zero();
+  Vector8 mass_ = Vector8::Zero();
+  Vector8 force_ = Vector8::Zero();
   Eigen::Matrix<double, 3, 8> B0_ = Eigen::Matrix<double, 3, 8>::Zero();
   Matrix8 Kstab_ = Matrix8::Zero();
   Matrix8 K_ = Matrix8::Zero();
   Matrix8 Kel_ = Matrix8::Zero();
   materials::Matrix3 elastic_C_ = materials::Matrix3::Zero();  ///< the initial tangent Kel_ was built with
   bool elastic_valid_ = false;
-  Vector8 mass_ = Vector8::Zero();
-  Vector8 force_ = Vector8::Zero();
 };
 
 /// `element SSPquad tag i j k l matTag PlaneStrain|PlaneStress thick <b1 b2>` (args start at the tag).

@@ -21,9 +21,11 @@ proc tie_coincident_nodes {{tol 1e-6}} {
 
 # The files scripts/hybrid_run.py expects in outdir (its contract): model.json, and every drec seconds the
 # nodal displacements and velocities and the full element stresses; plus the mesh quality every step.
-proc record_for_hybrid {outdir drec} {
+# soil_elements: the elements with stresses (default all; a model with zeroLength dashpots gives its soil
+# elements, which fem2mpm transfers: their tags must be a contiguous range).
+proc record_for_hybrid {outdir drec {soil_elements {}}} {
     set nodes [lsort -integer [getNodeTags]]
-    set eles [lsort -integer [getEleTags]]
+    set eles [lsort -integer [expr {[llength $soil_elements] ? $soil_elements : [getEleTags]}]]
     print -JSON -file [file join $outdir model.json]
     recorder Node -file [file join $outdir disp.out] -time -dT $drec -nodeRange [lindex $nodes 0] [lindex $nodes end] -dof 1 2 disp
     recorder Node -file [file join $outdir vel.out] -time -dT $drec -nodeRange [lindex $nodes 0] [lindex $nodes end] -dof 1 2 vel
@@ -43,12 +45,9 @@ proc gravity_stage {} {
     if {[analyze 1] != 0} { error "gravity stage: the static step failed" }
 }
 
-# Stage 2: MohrCoulomb (stage 1) for the materials given, Newmark average acceleration from t = 0 to tend in
-# steps of dt (halved up to 6 times where a step fails). The recorders are made here, at t = 0.
-proc collapse_stage {materials outdir tend dt drec} {
-    loadConst -time 0.0
-    wipeAnalysis
-    foreach m $materials { updateMaterialStage -material $m -stage 1 }
+# The transient analysis of the plastic stages: Newmark average acceleration, KrylovNewton on the elastic
+# tangent (factored once per dt), NormDispIncr 1e-6.
+proc transient_analysis {} {
     constraints Transformation
     numberer RCM
     system UmfPack
@@ -56,21 +55,38 @@ proc collapse_stage {materials outdir tend dt drec} {
     algorithm KrylovNewton -elasticTangent -maxDim 6
     integrator Newmark 0.5 0.25
     analysis Transient
+}
+
+# Stage 2: MohrCoulomb (stage 1) for the materials given, Newmark average acceleration from t = 0 to tend in
+# steps of dt (halved up to 6 times where a step fails). The recorders are made here, at t = 0.
+proc collapse_stage {materials outdir tend dt drec} {
+    loadConst -time 0.0
+    wipeAnalysis
+    foreach m $materials { updateMaterialStage -material $m -stage 1 }
+    transient_analysis
     record_for_hybrid $outdir $drec
     record
-    set t 0.0
+    set t [advance_to $tend $dt "collapse stage"]
+    remove recorders
+    set mj [minJacobian]
+    puts stdout [format "collapse stage: t = %.4g s reached, min corner det J %.4g (element %d)" $t [lindex $mj 0] [lindex $mj 1]]
+}
+
+# Transient steps of dt from the current time to tend (the last one shortened to land on tend), each halved
+# up to 6 times where it fails; an error naming the stage (label) and the time where it fails for good.
+# Returns the time reached.
+proc advance_to {tend dt label} {
+    set t [getTime]
     while {$tend - $t > 1e-9} {
         set h [expr {min($dt, $tend - $t)}]
         set cuts 0
         while {[analyze 1 $h] != 0} {
-            if {[incr cuts] > 6} { error [format "collapse stage: no convergence at t = %.6g s" $t] }
+            if {[incr cuts] > 6} { error [format "%s: no convergence at t = %.6g s" $label $t] }
             set h [expr {$h / 2.0}]
         }
         set t [getTime]
     }
-    remove recorders
-    set mj [minJacobian]
-    puts stdout [format "collapse stage: t = %.4g s reached, min corner det J %.4g (element %d)" $t [lindex $mj 0] [lindex $mj 1]]
+    return $t
 }
 
 # `-key value` options into the array named arr (whose defaults it holds); errors name the script.

@@ -76,7 +76,8 @@ def prune_particle_files(results, t0, keep_times):
 # ---- FEM files -------------------------------------------------------------------------------------
 
 def load_fem_model(fem_dir):
-    """Nodes (reference x, y in tag order) and element connectivity (indices into them) of model.json."""
+    """Nodes (reference x, y in tag order) and the soil elements' connectivity (indices into them) of
+    model.json; zeroLength elements (dashpots and springs of the boundary, as fem2mpm) are left out."""
     with open(os.path.join(fem_dir, "model.json")) as f:
         model = json.load(f)
     geo = model["StructuralAnalysisModel"]["geometry"]
@@ -84,7 +85,8 @@ def load_fem_model(fem_dir):
     tags = sorted(nodes)
     xy = np.array([nodes[t][:2] for t in tags], dtype=float)
     index = {t: k for k, t in enumerate(tags)}
-    elems = np.array([[index[n] for n in e["nodes"]] for e in geo["elements"]], dtype=int)
+    elems = np.array([[index[n] for n in e["nodes"]] for e in geo["elements"] if e.get("type") != "ZeroLength"],
+                     dtype=int)
     return xy, elems
 
 

@@ -112,6 +112,28 @@ TEST(SSPquad, StiffnessMassAndBodyForce) {
   EXPECT_FALSE(e.response({"bogus"}).has_value());
 }
 
+// The strain and internal force are computed from the factors of B0 and Kstab (not the dense matrices): on
+// an elastic material the internal force must be K u exactly (to round-off) for any displacement, and the
+// kept lumped mass must follow a density changed by setParameter rho.
+TEST(SSPquad, InternalForceIsStiffnessTimesDisplacementAndMassFollowsRho) {
+  QuadFixture f;
+  fem::elements::SSPquad e(1, f.nodes, f.material, PlaneType::PlaneStrain, 0.5, 0.0, 0.0);
+  const double u[8] = {1e-3, -2e-3, 3e-4, 5e-4, -7e-4, 1.1e-3, 2e-4, -9e-4};
+  Vector8 uv;
+  for (int a = 0; a < 4; ++a) {
+    f.nodes[a]->disp = fem::domain::Vector2(u[2 * a], u[2 * a + 1]);
+    uv[2 * a] = u[2 * a];
+    uv[2 * a + 1] = u[2 * a + 1];
+  }
+  e.update();
+  const Vector8 expected = e.tangent_stiffness() * uv;
+  const Vector8 force = e.resisting_force();
+  EXPECT_LT((force - expected).norm(), 1e-13 * expected.norm());
+  const double mass0 = e.lumped_mass().sum();
+  EXPECT_TRUE(e.set_parameter("rho", 6.0));
+  EXPECT_CLOSE(e.lumped_mass().sum(), 3.0 * mass0, 0.0, 1e-13);
+}
+
 TEST(SSPquad, MinJacobianFollowsTheDeformedShape) {
   QuadFixture f;
   fem::elements::SSPquad e(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0);
