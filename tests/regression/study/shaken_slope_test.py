@@ -22,6 +22,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklist import Checklist  # noqa: E402
+
 
 def main():
     ap = argparse.ArgumentParser()
@@ -29,12 +32,10 @@ def main():
     ap.add_argument("--repo", required=True)
     args = ap.parse_args()
     scratch = tempfile.mkdtemp(prefix="shaken_slope_")
-    failures = []
+    checks = Checklist()
 
     def check(ok, what):
-        print(("ok: " if ok else "FAILED: ") + what)
-        if not ok:
-            failures.append(what)
+        checks.expect(what, ok)
 
     try:
         r = subprocess.run([sys.executable, os.path.join(args.repo, "scripts", "shaken_slope", "study.py"), "--quick", "--no-figure",
@@ -72,7 +73,7 @@ def main():
               "MPM runout shaken %.4f m >= unshaken %.4f m" % (mpm["shaken"]["runout_m"], mpm["unshaken"]["runout_m"]))
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
-    return 1 if failures else 0
+    return checks.exit_status()
 
 
 if __name__ == "__main__":
