@@ -300,20 +300,17 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   // numbers them as the HDF5 file does.
   d.particle_files.clear();
   ordered_json generators = ordered_json::array();
-  std::vector<std::pair<std::size_t, std::size_t>> runs;  // [first, last) of equal material_id
-  for (std::size_t k = 0; k < particles.size(); ++k)
-    if (k == 0 || particles[k].material_id != particles[k - 1].material_id) runs.emplace_back(k, k);
-  for (auto& r : runs) {
-    r.second = r.first;
-    while (r.second < particles.size() && particles[r.second].material_id == particles[r.first].material_id) ++r.second;
-  }
-  if (runs.empty()) runs.emplace_back(0, 0);
+  const std::size_t n = particles.size();
+  const bool one_material =
+      std::all_of(particles.begin(), particles.end(), [&](const auto& p) { return p.material_id == particles[0].material_id; });
   std::set<unsigned> seen;
-  for (const auto& [first, last] : runs) {
-    const unsigned id = first < particles.size() ? particles[first].material_id
-                                                 : (state.materials.empty() ? 0u : state.materials.front().id);
+  std::size_t first = 0;
+  do {  // each run of equal material_id [first, last): one generator (one run, possibly empty, at least)
+    const unsigned id = first < n ? particles[first].material_id : (state.materials.empty() ? 0u : state.materials.front().id);
+    std::size_t last = first;
+    while (last < n && particles[last].material_id == id) ++last;
     if (!seen.insert(id).second) throw std::logic_error("format_deck: the particles are not grouped by material");
-    const std::string name = runs.size() == 1 ? "particles.txt" : "particles_material" + std::to_string(id) + ".txt";
+    const std::string name = one_material ? "particles.txt" : "particles_material" + std::to_string(id) + ".txt";
     generators.push_back({{"generator",
                            {{"check_duplicates", false},
                             {"location", name},
@@ -323,7 +320,8 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
                             {"material_id", id},
                             {"type", "file"}}}});
     d.particle_files.emplace_back(name, coordinate_file(particles.subspan(first, last - first)));
-  }
+    first = last;
+  } while (first < n);
   deck["particles"] = generators;
   ordered_json mats = ordered_json::array();
   for (const auto& m : state.materials) mats.push_back(material_json(m));
