@@ -11,6 +11,7 @@
 #include <ostream>
 #include <thread>
 
+#include "bridge/affine_state.hpp"
 #include "bridge/boundary_extraction.hpp"
 #include "bridge/deck_boundaries.hpp"
 #include "bridge/fem_model.hpp"
@@ -188,6 +189,10 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   const auto particles = generate_particles(state, nodal, mo);
   timing.map = lap();
   DeckText d = plan_deck(state, particles, deck);  // the last check that can fail on user input
+  // APIC: the particles' affine matrices from the FEM velocity gradient (affine_state.hpp).
+  const bool apic = deck.transfer == "apic" && !deck.velocity_update;
+  const std::vector<Matrix2> affine =
+      apic ? apic_matrices(particles, particle_velocity_gradients(state, mo), d.grid) : std::vector<Matrix2>{};
   // Warnings only now: a failed run prints its one error line and nothing else.
   std::vector<std::string> warnings = assembled.warnings;
   warnings.insert(warnings.end(), supports.warnings.begin(), supports.warnings.end());
@@ -206,7 +211,12 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   std::thread h5_writer([&] {
     try {
       const auto start = Clock::now();
-      mpm::io::write_particle_table(h5_path, particles);
+      if (apic)
+        mpm::io::write_particle_table(h5_path, particles, [&](std::int64_t file_id) {
+          mpm::io::write_affine_dataset(file_id, affine, h5_path.string());
+        });
+      else
+        mpm::io::write_particle_table(h5_path, particles);
       h5_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     } catch (...) {
       h5_error = std::current_exception();

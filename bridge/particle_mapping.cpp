@@ -32,6 +32,16 @@ unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& s, double* svar
   return 7;
 }
 
+std::vector<std::size_t> particle_slots(const TransferState& state) {
+  std::vector<std::size_t> count(state.materials.size(), 0);
+  for (const auto& el : state.elements) ++count[el.material];
+  std::vector<std::size_t> next(state.materials.size(), 0);
+  for (std::size_t m = 1; m < count.size(); ++m) next[m] = next[m - 1] + count[m - 1];
+  std::vector<std::size_t> slot(state.elements.size());
+  for (std::size_t e = 0; e < state.elements.size(); ++e) slot[e] = next[state.elements[e].material]++;
+  return slot;
+}
+
 ParticleList generate_particles(const TransferState& state,
                                                         const std::vector<Stress6>& nodal_stress,
                                                         const MappingOptions& options) {
@@ -51,16 +61,7 @@ ParticleList generate_particles(const TransferState& state,
                         shape_functions(xi, eta)});
     }
 
-  // Particles are grouped by material (each group in element order), so that the deck's one particle
-  // file per material (CB-Geo's generator per material_id) numbers them as the HDF5 file does.
-  std::vector<std::size_t> slot(state.elements.size());  // an element's first particle / per_element
-  {
-    std::vector<std::size_t> count(state.materials.size(), 0);
-    for (const auto& el : state.elements) ++count[el.material];
-    std::vector<std::size_t> next(state.materials.size(), 0);
-    for (std::size_t m = 1; m < count.size(); ++m) next[m] = next[m - 1] + count[m - 1];
-    for (std::size_t e = 0; e < state.elements.size(); ++e) slot[e] = next[state.elements[e].material]++;
-  }
+  const std::vector<std::size_t> slot = particle_slots(state);
 
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t ie = 0; ie < static_cast<std::ptrdiff_t>(state.elements.size()); ++ie) {

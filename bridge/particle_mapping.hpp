@@ -55,6 +55,12 @@ std::vector<long> inverted_elements(const TransferState& state);
 /// pdstrain = 0. Returns the count (7).
 unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& stress, double* svars);
 
+/// Where each element's particles go: element e's particles are slot[e] * n^2 ... slot[e] * n^2 + n^2 - 1.
+/// The elements are grouped by material (the materials in state order, each material's elements in
+/// element order), so that the deck's one particle file per material (CB-Geo's generator per
+/// material_id) numbers the particles as the HDF5 file does.
+std::vector<std::size_t> particle_slots(const TransferState& state);
+
 /// Generates the particles: n x n Gauss-Legendre points in (xi, eta) per element, eta-major, grouped by
 /// material (the materials in state order, each material's elements in element order: id =
 /// (slot of the element in that order) * n^2 + j * n + i). Position, displacement, velocity and stress from the nodal
