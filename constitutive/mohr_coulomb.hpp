@@ -22,6 +22,7 @@
 // solve at most a 3x3 linear system per active-set candidate.
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 
 namespace constitutive {
 
@@ -96,6 +97,24 @@ MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, con
                                       const MohrCoulombStrength& strength);
 MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, const IsotropicElasticity& elasticity,
                                       const MohrCoulombSurface& surface);
+
+/// mohr_coulomb_return for one elasticity and one surface, with what depends on them alone formed once
+/// (the yield planes, each active-set candidate's matrix and inverse, the tension cutoff's state):
+/// apply(trial) gives mohr_coulomb_return(trial, elasticity, surface) bit for bit, with less work per
+/// plastic state. Immutable; copies share the data (safe to use from several threads).
+class MohrCoulombReturnMap {
+ public:
+  MohrCoulombReturnMap() = default;
+  MohrCoulombReturnMap(const IsotropicElasticity& elasticity, const MohrCoulombSurface& surface);
+  bool valid() const { return data_ != nullptr; }
+  MohrCoulombUpdate apply(const PlaneStrainStress& trial_stress) const;
+  const MohrCoulombSurface& surface() const;
+  const IsotropicElasticity& elasticity() const;
+
+ private:
+  struct Data;
+  std::shared_ptr<const Data> data_;
+};
 
 /// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress
 /// ([SPO] sec. 8.2 in principal space, mapped back with the spin term of [SPO] Appendix A).
