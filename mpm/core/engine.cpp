@@ -13,6 +13,7 @@
 #include "mpm/core/boundary_rules.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/shape_functions.hpp"
+#include "mpm/core/stencil_kernels.hpp"
 
 namespace mpm::core {
 
@@ -361,8 +362,7 @@ void Engine::run_step() {
     case io::Scheme::USF:  // update stress first: strain rate from the velocity of the mapped momentum
       p2g<Shape>(kMassMomentum);
       nodal_velocity(kMassMomentum);
-      update_stress<Shape>(StrainFrom::NodalVelocity);
-      p2g<Shape>(kForces);  // from the updated stress
+      update_stress<Shape>(StrainFrom::NodalVelocity, AfterStress::MapForces);  // and p2g of the forces from it
       update_grid(kForces);
       g2p<Shape>(G2pAlso::Nothing);
       break;
@@ -370,14 +370,14 @@ void Engine::run_step() {
       p2g<Shape>(kAllFields);
       update_grid(kAllFields);
       g2p<Shape>(G2pAlso::StrainIncrements);
-      update_stress<Shape>(StrainFrom::G2p);
+      update_stress<Shape>(StrainFrom::G2p, AfterStress::Nothing);
       break;
     case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
       p2g<Shape>(kAllFields);
       update_grid(kAllFields);
       g2p<Shape>(G2pAlso::RemapMomentum);
       nodal_velocity(kMomentum);
-      update_stress<Shape>(StrainFrom::NodalVelocity);
+      update_stress<Shape>(StrainFrom::NodalVelocity, AfterStress::Nothing);
       break;
   }
 }
@@ -465,12 +465,8 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
     double* wk = &weights_[k * 4 * W];
     if (shape_functions) {
       int bi = 0, bj = 0;
-      Shape::eval((cur_.x[p] - grid_.x0) * ihx, cur_.lx[p], cells_x_ - 1, bi, wk, wk + 2 * W);
-      Shape::eval((cur_.y[p] - grid_.y0) * ihy, cur_.ly[p], cells_y_ - 1, bj, wk + W, wk + 3 * W);
-      for (int a = 0; a < W; ++a) {
-        wk[2 * W + a] *= ihx;
-        wk[3 * W + a] *= ihy;
-      }
+      Shape::eval_xy((cur_.x[p] - grid_.x0) * ihx, (cur_.y[p] - grid_.y0) * ihy, cur_.lx[p], cur_.ly[p],
+                     cells_x_ - 1, cells_y_ - 1, ihx, ihy, bi, bj, wk);
       base_[k] = bi + bj * nx_;
       local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
       if (!stencil_offset_.empty()) {
@@ -478,35 +474,20 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
         stencil_offset_[2 * k + 1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
       }
     }
-    const double* wx = wk;
-    const double* wy = wk + W;
-    const double* dwx = wk + 2 * W;
-    const double* dwy = wk + 3 * W;
+    const StencilWeights<W> w(wk);
     const double m = cur_.mass[p];
-    const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
-    const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p], wk,
-                                                       Affine ? offset[0] : 0.0, Affine ? offset[1] : 0.0,
-                                                       grid_.hx, grid_.hy);
-    const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
-    const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
-    const double sxx = sp[0], syy = sp[1], sxy = sp[3];
-    const double mgx = m * gx_, mgy = m * gy_;
     double* band_row = g + local_[k];
-    for (int b = 0; b < W; ++b, band_row += row_stride) {
-      double* gn = band_row;
-      for (int a = 0; a < W; ++a, gn += 5) {
-        const double N = wx[a] * wy[b];
-        if (mass_momentum) {
-          gn[0] += m * N;
-          gn[1] += momentum.x(a, b, N);
-          gn[2] += momentum.y(a, b, N);
-        }
-        if (forces) {
-          const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
-          gn[3] += mgx * N - V * (dx * sxx + dy * sxy);
-          gn[4] += mgy * N - V * (dx * sxy + dy * syy);
-        }
-      }
+    if (mass_momentum) {
+      const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
+      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p], wk,
+                                                         Affine ? offset[0] : 0.0, Affine ? offset[1] : 0.0,
+                                                         grid_.hx, grid_.hy);
+      scatter_mass_momentum(band_row, row_stride, w, m, momentum);
+    }
+    if (forces) {
+      const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
+      const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
+      scatter_forces(band_row, row_stride, w, Double2{m * gx_, m * gy_}, V, sp[0], sp[1], sp[3]);
     }
   }
 }
@@ -614,13 +595,8 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   const double h = std::min(grid_.hx, grid_.hy);
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const std::uint32_t p = order_[k];
-    const double* wx = &weights_[k * 4 * W];
-    const double* wy = wx + W;
-    const double* dwx = wx + 2 * W;
-    const double* dwy = wx + 3 * W;
-    double vgx = 0, vgy = 0, agx = 0, agy = 0;
-    double lxx = 0, lyy = 0, lxy = 0, lyx = 0;
-    double B[4] = {0, 0, 0, 0};  // APIC: sum N v_new (x_i - x_p)^T
+    const double* wk = &weights_[k * 4 * W];
+    const StencilWeights<W> w(wk);
     const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
     double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
     if constexpr (Affine)
@@ -628,56 +604,21 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         dxs[a] = offset[0] + a * grid_.hx;
         dys[a] = offset[1] + a * grid_.hy;
       }
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      const double* u = &updated_[4 * node_row];
-      for (int a = 0; a < W; ++a, u += 4) {
-        const double N = wx[a] * wy[b];
-        vgx += N * u[0];
-        vgy += N * u[1];
-        if constexpr (Affine) {
-          const double Nvx = N * u[0], Nvy = N * u[1];
-          B[0] += Nvx * dxs[a];
-          B[1] += Nvx * dys[b];
-          B[2] += Nvy * dxs[a];
-          B[3] += Nvy * dys[b];
-        } else {
-          agx += N * u[2];
-          agy += N * u[3];
-        }
-        if (strain_increments) {
-          const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
-          lxx += dx * u[0];
-          lyy += dy * u[1];
-          lxy += dy * u[0];
-          lyx += dx * u[1];
-        }
-      }
-    }
-    if (strain_increments) {
-      double* de = &dstrain_[3 * k];
-      de[0] = dt_ * lxx;
-      de[1] = dt_ * lyy;
-      de[2] = dt_ * (lxy + lyx);
-    }
-    const double vx = transfer_.particle_velocity(cur_.vx[p], vgx, agx, dt_);
-    const double vy = transfer_.particle_velocity(cur_.vy[p], vgy, agy, dt_);
+    const GridSums sums = gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]),
+                                                    static_cast<std::size_t>(nx_), w, dxs, dys, strain_increments);
+    if (strain_increments) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
+    const double vgx = sums.v[0], vgy = sums.v[1];
+    const double vx = transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
+    const double vy = transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
     const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
     nxt_.vx[k] = vx;
     nxt_.vy[k] = vy;
+    const double B[4] = {sums.b_dx[0], sums.b_dy[0], sums.b_dx[1], sums.b_dy[1]};  // APIC: Bxx, Bxy, Byx, Byy
     if constexpr (Affine) std::copy_n(B, 4, &nxt_.affine[4 * k]);
     if (remap_momentum) {
-      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B, wx, Affine ? offset[0] : 0.0,
+      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B, wk, Affine ? offset[0] : 0.0,
                                                          Affine ? offset[1] : 0.0, grid_.hx, grid_.hy);
-      double* band_row = g + local_[k];
-      for (int b = 0; b < W; ++b, band_row += row_stride) {
-        double* gn = band_row;
-        for (int a = 0; a < W; ++a, gn += 5) {
-          const double N = wx[a] * wy[b];
-          gn[1] += momentum.x(a, b, N);
-          gn[2] += momentum.y(a, b, N);
-        }
-      }
+      scatter_momentum(g + local_[k], row_stride, w, momentum);
     }
     nxt_.x[k] = x;
     nxt_.y[k] = y;
@@ -728,11 +669,14 @@ struct MixedMaterials {
 /// Stress update: strain increment from the nodal velocity at the particle (or the one g2p stored),
 /// the selected checkerboard remedy (stress_remedy.hpp), then the material's stress update and the
 /// carried state (next buffer). A nodal remedy needs every chunk's values at the nodes first, hence
-/// its barriers.
+/// its barriers. With AfterStress::MapForces (USF) each chunk then maps its forces from the updated
+/// stress into its band (p2g_chunk, kForces): the same sums, in the same order, as a separate p2g pass
+/// after a barrier, while the chunk's particles are still in cache.
 template <class Shape>
-void Engine::update_stress(StrainFrom from) {
+void Engine::update_stress(StrainFrom from, AfterStress then) {
   wait_for_previous_phase();
   const bool strain_ready = from == StrainFrom::G2p;
+  const bool map_forces = then == AfterStress::MapForces;
   if (nodal_projection(smoothing_).values > 0) {
     for_each_chunk([&](std::size_t c) {
       if (!strain_ready) compute_strain_increments<Shape>(c);
@@ -744,6 +688,7 @@ void Engine::update_stress(StrainFrom from) {
     for_each_chunk([&](std::size_t c) {
       gather_remedy_values<Shape>(c);
       update_material_state(c);
+      if (map_forces) p2g_chunk<Shape, false>(c, kForces);
     });
   } else {
     const bool cell_remedy = is_cell_remedy(smoothing_);
@@ -751,6 +696,7 @@ void Engine::update_stress(StrainFrom from) {
       if (!strain_ready) compute_strain_increments<Shape>(c);
       if (cell_remedy) apply_cell_remedy(c);
       update_material_state(c);
+      if (map_forces) p2g_chunk<Shape, false>(c, kForces);
     });
   }
 }
@@ -761,27 +707,9 @@ template <class Shape>
 void Engine::compute_strain_increments(std::size_t c) {
   constexpr int W = Shape::kWidth;
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const double* wk = &weights_[k * 4 * W];
-    const double* wx = wk;
-    const double* wy = wk + W;
-    const double* dwx = wk + 2 * W;
-    const double* dwy = wk + 3 * W;
-    double lxx = 0, lyy = 0, lxy = 0, lyx = 0;  // dvx/dx, dvy/dy, dvx/dy, dvy/dx
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      const double* v = &velocity_[2 * node_row];
-      for (int a = 0; a < W; ++a, v += 2) {
-        const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
-        lxx += dx * v[0];
-        lyy += dy * v[1];
-        lxy += dy * v[0];
-        lyx += dx * v[1];
-      }
-    }
-    double* de = &dstrain_[3 * k];
-    de[0] = dt_ * lxx;
-    de[1] = dt_ * lyy;
-    de[2] = dt_ * (lxy + lyx);
+    const StencilWeights<W> w(&weights_[k * 4 * W]);
+    gather_velocity_gradient(velocity_.data(), 2, static_cast<std::size_t>(base_[k]), static_cast<std::size_t>(nx_), w)
+        .strain_increment(dt_, &dstrain_[3 * k]);
   }
 }
 

@@ -30,6 +30,7 @@
 // affine field back before the constraints are applied again.
 #include <cstddef>
 
+#include "mpm/core/lanes.hpp"
 #include "mpm/core/shape_functions.hpp"
 #include "mpm/io/deck.hpp"
 
@@ -78,39 +79,34 @@ inline void affine_axis_weights(LinearShape, const double* /*w*/, const double* 
 /// What one particle adds to the momentum of node (a, b) of its stencil (weight N = wx_a wy_b):
 /// m_p N v_p, and with APIC (Affine) also m_p B_p (ax_a wy_b, wx_a ay_b) = m_p N B_p D_p^-1 (x_i - x_p).
 /// Built once per particle per p2g (and per MUSL remap) from its weights at its current position.
+/// The x and y components go together in one Double2 (lanes.hpp), each lane the component's sum
+///   x: m vx N + (m Bxx ax_a) wy_b + (m Bxy ay_b) wx_a,   y: m vy N + (m Byx ax_a) wy_b + (m Byy ay_b) wx_a.
 template <class Shape, bool Affine>
 struct MomentumContribution {
   static constexpr int W = Shape::kWidth;
-  double mvx = 0, mvy = 0;
-  /// m_p B_p times the per-axis affine weights (affine_axis_weights): xx ax_a, xy ay_b, yx ax_a, yy ay_b
-  double bxx[W] = {}, bxy[W] = {}, byx[W] = {}, byy[W] = {};
-  const double* wx = nullptr;
-  const double* wy = nullptr;
+  Double2 mv = splat2(0.0);
+  /// m_p B_p times the per-axis affine weights (affine_axis_weights): (xx ax_a, yx ax_a), (xy ay_b, yy ay_b)
+  Double2 b_ax[W] = {}, b_ay[W] = {};
 
   /// `w` = the particle's stored weights (wx, wy, dwx, dwy; W each, gradients per metre), `B` its
   /// matrix (read only when Affine), (ox, oy) = first stencil node minus particle, m.
   MomentumContribution(double m, double vx, double vy, const double* B, const double* w, double ox, double oy,
                        double hx, double hy)
-      : mvx(m * vx), mvy(m * vy), wx(w), wy(w + W) {
+      : mv{m * vx, m * vy} {
     if constexpr (Affine) {
       double ax[W], ay[W];
       affine_axis_weights(Shape{}, w, w + 2 * W, ox, hx, ax);
       affine_axis_weights(Shape{}, w + W, w + 3 * W, oy, hy, ay);
       for (int k = 0; k < W; ++k) {
-        bxx[k] = m * B[0] * ax[k];
-        bxy[k] = m * B[1] * ay[k];
-        byx[k] = m * B[2] * ax[k];
-        byy[k] = m * B[3] * ay[k];
+        b_ax[k] = Double2{m * B[0] * ax[k], m * B[2] * ax[k]};
+        b_ay[k] = Double2{m * B[1] * ay[k], m * B[3] * ay[k]};
       }
     }
   }
-  double x(int a, int b, double N) const {
-    if constexpr (Affine) return mvx * N + bxx[a] * wy[b] + bxy[b] * wx[a];
-    return mvx * N;
-  }
-  double y(int a, int b, double N) const {
-    if constexpr (Affine) return mvy * N + byx[a] * wy[b] + byy[b] * wx[a];
-    return mvy * N;
+  /// Node (a, b) with weight N = wx_a wy_b (wx_a, wy_b the axis weights).
+  Double2 xy(int a, int b, double N, double wx_a, double wy_b) const {
+    if constexpr (Affine) return mv * N + b_ax[a] * wy_b + b_ay[b] * wx_a;
+    return mv * N;
   }
 };
 
