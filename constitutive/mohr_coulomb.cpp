@@ -284,15 +284,6 @@ const char* to_string(ReturnRegion region) {
   return "unknown";
 }
 
-PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
-                                const IsotropicElasticity& el) {
-  const double g = el.shear_modulus;
-  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
-  const double dvol = dstrain[0] + dstrain[1];
-  return {stress[0] + lambda * dvol + 2.0 * g * dstrain[0], stress[1] + lambda * dvol + 2.0 * g * dstrain[1],
-          stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
-}
-
 MohrCoulombSurface::MohrCoulombSurface(const MohrCoulombStrength& st)
     : strength(st), sin_phi(std::sin(st.friction)), cos_phi(std::cos(st.friction)), sin_psi(std::sin(st.dilation)) {}
 

@@ -81,8 +81,15 @@ struct MohrCoulombUpdate {
 };
 
 /// Elastic trial stress: stress + D dstrain with dezz = 0, so dszz = (K - 2G/3)(dexx + deyy).
-PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
-                                const IsotropicElasticity& elasticity);
+/// (Inline: the MPM calls it once per particle per step.)
+inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                       const IsotropicElasticity& el) {
+  const double g = el.shear_modulus;
+  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
+  const double dvol = dstrain[0] + dstrain[1];
+  return {stress[0] + lambda * dvol + 2.0 * g * dstrain[0], stress[1] + lambda * dvol + 2.0 * g * dstrain[1],
+          stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
+}
 
 /// Elastic predictor + closest-point return in principal stress space ([SPO] Boxes 8.4-8.6; [CDA])
 /// onto face / edges / apex (+ tension cutoff). A trial state inside the surface (f <= tol) is returned

@@ -820,12 +820,9 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     const double* de = &dstrain_[3 * k];
     double* s = &nxt_.stress[4 * k];  // updated in place (a whole-block copy: no partial-store stalls)
     std::copy_n(&cur_.stress[4 * p], 4, s);
-    double sv[kStateVariables];
-    const double* sv_in = &cur_.svars[p * kStateVariables];
-    for (std::size_t i = 0; i < kStateVariables; ++i) sv[i] = sv_in[i];
+    double* sv = &nxt_.svars[k * kStateVariables];  // updated in place, as the stress
+    std::copy_n(&cur_.svars[p * kStateVariables], kStateVariables, sv);
     dispatch(cur_.material[p], s, de, sv);
-    double* sv_out = &nxt_.svars[k * kStateVariables];
-    for (std::size_t i = 0; i < kStateVariables; ++i) sv_out[i] = sv[i];
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
     nxt_.epsv[k] = cur_.epsv[p] + dv;
