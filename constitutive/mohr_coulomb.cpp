@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace constitutive {
 namespace {
@@ -113,35 +114,85 @@ struct PrincipalResult {
   int count;                  ///< 0 = elastic; -1 = a vertex reached through a 3-plane set or the apex
 };
 
+/// The active-set candidates in the order they are tried: from the most frequent; the first admissible
+/// one is the return ([SPO] Box 8.5 tries the face, then the edge on the trial's side, then the apex; the
+/// Rankine sets follow [CDA]).
+struct Candidate {
+  std::array<int, 3> ids;
+  int k;
+  ReturnRegion region;
+};
+constexpr std::array<Candidate, 12> kCandidates{{
+    {{kMain, 0, 0}, 1, ReturnRegion::Face},
+    {{kMain, kTC, 0}, 2, ReturnRegion::EdgeTriaxialCompression},
+    {{kMain, kTE, 0}, 2, ReturnRegion::EdgeTriaxialExtension},
+    {{kT1, 0, 0}, 1, ReturnRegion::TensionCutoff},
+    {{kT1, kMain, 0}, 2, ReturnRegion::TensionShearEdge},
+    {{kT1, kT2, 0}, 2, ReturnRegion::TensionCutoffEdge},
+    {{kT1, kMain, kTE}, 3, ReturnRegion::TensionCorner},
+    {{kT1, kT2, kMain}, 3, ReturnRegion::TensionCorner},
+    {{kT1, kT2, kTC}, 3, ReturnRegion::TensionCorner},
+    {{kT1, kMain, kTC}, 3, ReturnRegion::TensionCorner},
+    {{kT2, kMain, kTC}, 3, ReturnRegion::TensionCorner},
+    {{kT1, kT2, kT3}, 3, ReturnRegion::TensionCorner},
+}};
+
+/// What one candidate's solve needs that depends on the planes alone (not on the trial stress): the
+/// matrix a_jl = m_j . D n_l of its active planes, whether it is (near-)singular, its inverse for 3
+/// planes, and the inactive planes it is checked against (ascending).
+struct CandidateSolve {
+  Eigen::Matrix3d a = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d inverse = Eigen::Matrix3d::Identity();
+  double det = 1.0;
+  bool singular = false;
+  std::array<int, 6> others{};
+  int other_count = 0;
+};
+
+CandidateSolve solve_of(const Planes& p, const int* ids, int k) {
+  CandidateSolve cs;
+  double amax = 0.0;
+  for (int j = 0; j < k; ++j)
+    for (int l = 0; l < k; ++l) {
+      cs.a(j, l) = p.m[ids[j]].dot(p.dn[ids[l]]);
+      amax = std::max(amax, std::abs(cs.a(j, l)));
+    }
+  // Closed-form solves by size (1, 2 or 3 active planes); a (near-)singular set is not a candidate.
+  if (k == 1) {
+    cs.singular = !(std::abs(cs.a(0, 0)) > 1e-12 * amax);
+  } else if (k == 2) {
+    cs.det = cs.a(0, 0) * cs.a(1, 1) - cs.a(0, 1) * cs.a(1, 0);
+    cs.singular = !(std::abs(cs.det) > 1e-12 * amax * amax);
+  } else {
+    cs.det = cs.a.determinant();
+    cs.singular = !(std::abs(cs.det) > 1e-12 * amax * amax * amax);
+    if (!cs.singular) cs.inverse = cs.a.inverse();
+  }
+  for (int j = 0; j < 6; ++j) {
+    if (j >= kT1 && !p.tension) break;
+    if (std::find(ids, ids + k, j) != ids + k) continue;
+    cs.others[static_cast<std::size_t>(cs.other_count++)] = j;
+  }
+  return cs;
+}
+
 /// One active-set candidate: solve sum_l (m_j . D n_l) dgamma_l = m_j . s_trial - r_j ([SPO] sec. 8.2,
 /// [CDA]), then check dgamma >= 0, the principal order and every other plane.
 /// Returns the violation measure (<= 0 when admissible); the stress in `out`.
-double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* ids, int k, double tol,
-                      double gamma_scale, Eigen::Vector3d& out) {
-  Eigen::Matrix3d a = Eigen::Matrix3d::Identity();
+double try_active_set(const Planes& p, const CandidateSolve& cs, const Eigen::Vector3d& trial, const int* ids, int k,
+                      double tol, double gamma_scale, Eigen::Vector3d& out) {
+  if (cs.singular) return std::numeric_limits<double>::infinity();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  double amax = 0.0;
-  for (int j = 0; j < k; ++j) {
-    b[j] = p.m[ids[j]].dot(trial) - p.r[ids[j]];
-    for (int l = 0; l < k; ++l) {
-      a(j, l) = p.m[ids[j]].dot(p.dn[ids[l]]);
-      amax = std::max(amax, std::abs(a(j, l)));
-    }
-  }
-  // Closed-form solves by size (1, 2 or 3 active planes); a (near-)singular set is not a candidate.
+  for (int j = 0; j < k; ++j) b[j] = p.m[ids[j]].dot(trial) - p.r[ids[j]];
+  const Eigen::Matrix3d& a = cs.a;
   Eigen::Vector3d gamma = Eigen::Vector3d::Zero();
   if (k == 1) {
-    if (!(std::abs(a(0, 0)) > 1e-12 * amax)) return std::numeric_limits<double>::infinity();
     gamma[0] = b[0] / a(0, 0);
   } else if (k == 2) {
-    const double det = a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0);
-    if (!(std::abs(det) > 1e-12 * amax * amax)) return std::numeric_limits<double>::infinity();
-    gamma[0] = (a(1, 1) * b[0] - a(0, 1) * b[1]) / det;
-    gamma[1] = (a(0, 0) * b[1] - a(1, 0) * b[0]) / det;
+    gamma[0] = (a(1, 1) * b[0] - a(0, 1) * b[1]) / cs.det;
+    gamma[1] = (a(0, 0) * b[1] - a(1, 0) * b[0]) / cs.det;
   } else {
-    const double det = a.determinant();
-    if (!(std::abs(det) > 1e-12 * amax * amax * amax)) return std::numeric_limits<double>::infinity();
-    gamma = a.inverse() * b;
+    gamma = cs.inverse * b;
   }
   out = trial;
   double violation = -std::numeric_limits<double>::infinity();
@@ -151,9 +202,8 @@ double try_active_set(const Planes& p, const Eigen::Vector3d& trial, const int* 
   }
   violation = std::max(violation, out[1] - out[0]);
   violation = std::max(violation, out[2] - out[1]);
-  for (int j = 0; j < 6; ++j) {
-    if (j >= kT1 && !p.tension) break;
-    if (std::find(ids, ids + k, j) != ids + k) continue;
+  for (int i = 0; i < cs.other_count; ++i) {
+    const int j = cs.others[static_cast<std::size_t>(i)];
     violation = std::max(violation, p.m[j].dot(out) - p.r[j]);
   }
   return violation - tol;
@@ -169,49 +219,35 @@ bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& s
 /// The elastic test on sorted principal trial values, [SPO] Box 8.4 step (ii), with a round-off tolerance of
 /// 1e-12 of the stress scale (so a state returned onto the surface stays elastic when reloaded with zero
 /// increment). The one place this test is made, for the fast path and for the full return alike.
-bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
+bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st, bool tension) {
   const double two_c_cos = 2.0 * st.cohesion * cos_phi;
-  const bool tension = tension_active(sin_phi, cos_phi, st);
   const double scale = std::max({std::abs(t[0]), std::abs(t[2]), two_c_cos, tension ? std::abs(st.tension_cutoff) : 0.0});
   const double tol = 1e-12 * scale;
   const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
   return f_main <= tol && (!tension || t[0] - st.tension_cutoff <= tol);
 }
+bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
+  return inside(t, sin_phi, cos_phi, st, tension_active(sin_phi, cos_phi, st));
+}
 
 /// The return in sorted principal space for a trial OUTSIDE the surface (see inside()).
-PrincipalResult principal_return(const Planes& p, const Eigen::Vector3d& trial, double shear_modulus) {
+/// `solves`: the candidates' solves in kCandidates order, or nullptr to form each when it is tried.
+PrincipalResult principal_return(const Planes& p, const Eigen::Vector3d& trial, double shear_modulus,
+                                 const CandidateSolve* solves) {
   const double scale = std::max({std::abs(trial[0]), std::abs(trial[2]), std::abs(p.r[kMain]),
                                  p.tension ? std::abs(p.r[kT1]) : 0.0});
   PrincipalResult res{trial, ReturnRegion::Elastic, {0, 0, 0}, 0};
 
-  struct Candidate {
-    std::array<int, 3> ids;
-    int k;
-    ReturnRegion region;
-  };
-  // Ordered from the most frequent; the first admissible one is the return ([SPO] Box 8.5 tries the face,
-  // then the edge on the trial's side, then the apex; the Rankine sets follow [CDA]).
-  static constexpr std::array<Candidate, 12> kCandidates{{
-      {{kMain, 0, 0}, 1, ReturnRegion::Face},
-      {{kMain, kTC, 0}, 2, ReturnRegion::EdgeTriaxialCompression},
-      {{kMain, kTE, 0}, 2, ReturnRegion::EdgeTriaxialExtension},
-      {{kT1, 0, 0}, 1, ReturnRegion::TensionCutoff},
-      {{kT1, kMain, 0}, 2, ReturnRegion::TensionShearEdge},
-      {{kT1, kT2, 0}, 2, ReturnRegion::TensionCutoffEdge},
-      {{kT1, kMain, kTE}, 3, ReturnRegion::TensionCorner},
-      {{kT1, kT2, kMain}, 3, ReturnRegion::TensionCorner},
-      {{kT1, kT2, kTC}, 3, ReturnRegion::TensionCorner},
-      {{kT1, kMain, kTC}, 3, ReturnRegion::TensionCorner},
-      {{kT2, kMain, kTC}, 3, ReturnRegion::TensionCorner},
-      {{kT1, kT2, kT3}, 3, ReturnRegion::TensionCorner},
-  }};
   const double tol = 1e-9 * scale;
   const double gamma_scale = 2.0 * shear_modulus;
   double best = std::numeric_limits<double>::infinity();
   Eigen::Vector3d out = trial;
-  for (const Candidate& c : kCandidates) {
+  CandidateSolve formed;  // a candidate's solve formed when it is tried (no `solves`)
+  for (std::size_t i = 0; i < kCandidates.size(); ++i) {
+    const Candidate& c = kCandidates[i];
     if (!p.tension && c.ids[0] >= kT1) break;  // the Rankine sets come last
-    const double v = try_active_set(p, trial, c.ids.data(), c.k, tol, gamma_scale, out);
+    const CandidateSolve* cs = solves != nullptr ? &solves[i] : &(formed = solve_of(p, c.ids.data(), c.k));
+    const double v = try_active_set(p, *cs, trial, c.ids.data(), c.k, tol, gamma_scale, out);
     if (v < best) {
       best = v;
       res.stress = out;
@@ -248,15 +284,6 @@ const char* to_string(ReturnRegion region) {
   return "unknown";
 }
 
-PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
-                                const IsotropicElasticity& el) {
-  const double g = el.shear_modulus;
-  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
-  const double dvol = dstrain[0] + dstrain[1];
-  return {stress[0] + lambda * dvol + 2.0 * g * dstrain[0], stress[1] + lambda * dvol + 2.0 * g * dstrain[1],
-          stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
-}
-
 MohrCoulombSurface::MohrCoulombSurface(const MohrCoulombStrength& st)
     : strength(st), sin_phi(std::sin(st.friction)), cos_phi(std::cos(st.friction)), sin_psi(std::sin(st.dilation)) {}
 
@@ -265,23 +292,58 @@ MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const Isot
   return mohr_coulomb_return(trial, el, MohrCoulombSurface(st));
 }
 
-MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const IsotropicElasticity& el,
-                                      const MohrCoulombSurface& surface) {
-  const Spectral sp = decompose(trial);
-  if (inside(sp.sorted, surface.sin_phi, surface.cos_phi, surface.strength))
-    return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
-  const Planes planes = make_planes(el, surface);
-  const PrincipalResult pr = principal_return(planes, sp.sorted, el.shear_modulus);
+namespace {
+/// The plastic part of the return (the trial is outside the surface): stress back from the principal
+/// return and the plastic strain increment C (s_trial - s) (the total strain is fixed; [SPO] sec. 8.2).
+MohrCoulombUpdate plastic_return(const PlaneStrainStress& trial, const Spectral& sp, const IsotropicElasticity& el,
+                                 const Planes& planes, const CandidateSolve* solves) {
+  const PrincipalResult pr = principal_return(planes, sp.sorted, el.shear_modulus, solves);
   MohrCoulombUpdate up;
   up.stress = recompose(sp, pr.stress);
   up.region = pr.region;
-  // Plastic strain increment = C (s_trial - s) (the total strain is fixed; [SPO] sec. 8.2).
   const Eigen::Vector4d ds = trial - up.stress;
   const double p = (ds[0] + ds[1] + ds[2]) / 3.0;
   const double g2 = 2.0 * el.shear_modulus, k3 = 3.0 * el.bulk_modulus;
   up.plastic_strain_increment = {(ds[0] - p) / g2 + p / k3, (ds[1] - p) / g2 + p / k3, (ds[2] - p) / g2 + p / k3,
                                  ds[3] / el.shear_modulus};
   return up;
+}
+}  // namespace
+
+MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial, const IsotropicElasticity& el,
+                                      const MohrCoulombSurface& surface) {
+  const Spectral sp = decompose(trial);
+  if (inside(sp.sorted, surface.sin_phi, surface.cos_phi, surface.strength))
+    return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
+  return plastic_return(trial, sp, el, make_planes(el, surface), nullptr);
+}
+
+struct MohrCoulombReturnMap::Data {
+  IsotropicElasticity elasticity;
+  MohrCoulombSurface surface;
+  Planes planes;
+  std::array<CandidateSolve, kCandidates.size()> solves;
+};
+
+MohrCoulombReturnMap::MohrCoulombReturnMap(const IsotropicElasticity& el, const MohrCoulombSurface& surface) {
+  auto d = std::make_shared<Data>();
+  d->elasticity = el;
+  d->surface = surface;
+  d->planes = make_planes(el, surface);
+  for (std::size_t i = 0; i < kCandidates.size(); ++i)
+    d->solves[i] = solve_of(d->planes, kCandidates[i].ids.data(), kCandidates[i].k);
+  data_ = std::move(d);
+}
+
+const MohrCoulombSurface& MohrCoulombReturnMap::surface() const { return data_->surface; }
+const IsotropicElasticity& MohrCoulombReturnMap::elasticity() const { return data_->elasticity; }
+
+MohrCoulombUpdate MohrCoulombReturnMap::apply(const PlaneStrainStress& trial) const {
+  const Data& d = *data_;
+  const Spectral sp = decompose(trial);
+  if (inside(sp.sorted, d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension))
+    return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
+  return plastic_return(trial, sp, d.elasticity, d.planes, d.solves.data());
 }
 
 MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
@@ -307,7 +369,7 @@ Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& tr
   const MohrCoulombSurface surface(st);
   if (inside(sp.sorted, surface.sin_phi, surface.cos_phi, st)) return d;
   const Planes planes = make_planes(el, surface);
-  const PrincipalResult pr = principal_return(planes, sp.sorted, g);
+  const PrincipalResult pr = principal_return(planes, sp.sorted, g, nullptr);
 
   // Principal algorithmic tangent ds/ds_trial = I - D N A^-1 M^T over the active planes ([SPO] sec. 8.2);
   // zero at a vertex (the stress is a fixed point).

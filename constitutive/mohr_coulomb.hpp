@@ -22,6 +22,7 @@
 // solve at most a 3x3 linear system per active-set candidate.
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 
 namespace constitutive {
 
@@ -80,8 +81,15 @@ struct MohrCoulombUpdate {
 };
 
 /// Elastic trial stress: stress + D dstrain with dezz = 0, so dszz = (K - 2G/3)(dexx + deyy).
-PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
-                                const IsotropicElasticity& elasticity);
+/// (Inline: the MPM calls it once per particle per step.)
+inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                       const IsotropicElasticity& el) {
+  const double g = el.shear_modulus;
+  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
+  const double dvol = dstrain[0] + dstrain[1];
+  return {stress[0] + lambda * dvol + 2.0 * g * dstrain[0], stress[1] + lambda * dvol + 2.0 * g * dstrain[1],
+          stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
+}
 
 /// Elastic predictor + closest-point return in principal stress space ([SPO] Boxes 8.4-8.6; [CDA])
 /// onto face / edges / apex (+ tension cutoff). A trial state inside the surface (f <= tol) is returned
@@ -96,6 +104,24 @@ MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, con
                                       const MohrCoulombStrength& strength);
 MohrCoulombUpdate mohr_coulomb_return(const PlaneStrainStress& trial_stress, const IsotropicElasticity& elasticity,
                                       const MohrCoulombSurface& surface);
+
+/// mohr_coulomb_return for one elasticity and one surface, with what depends on them alone formed once
+/// (the yield planes, each active-set candidate's matrix and inverse, the tension cutoff's state):
+/// apply(trial) gives mohr_coulomb_return(trial, elasticity, surface) bit for bit, with less work per
+/// plastic state. Immutable; copies share the data (safe to use from several threads).
+class MohrCoulombReturnMap {
+ public:
+  MohrCoulombReturnMap() = default;
+  MohrCoulombReturnMap(const IsotropicElasticity& elasticity, const MohrCoulombSurface& surface);
+  bool valid() const { return data_ != nullptr; }
+  MohrCoulombUpdate apply(const PlaneStrainStress& trial_stress) const;
+  const MohrCoulombSurface& surface() const;
+  const IsotropicElasticity& elasticity() const;
+
+ private:
+  struct Data;
+  std::shared_ptr<const Data> data_;
+};
 
 /// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress
 /// ([SPO] sec. 8.2 in principal space, mapped back with the spin term of [SPO] Appendix A).

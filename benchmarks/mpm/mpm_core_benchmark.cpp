@@ -1,6 +1,7 @@
 // Throughput and accuracy of the MPM engine (not a test; prints figures).
 //
-//   mpm_core_benchmark [--quick | --throughput [steps [repeats]] | --accuracy | --runout [threads [usl|musl|usf [pic_blend]]]]
+//   mpm_core_benchmark [--quick | --throughput [steps [repeats]] | --scaling [repeats] | --checksum [steps] | --accuracy |
+//                       --profile [scheme [transfer [steps [threads]]]] | --runout [threads [usl|musl|usf [pic_blend]]]]
 //
 // Figures are wall-clock medians; the CPU-time rate (particle-steps per CPU-second of all threads) is
 // printed next to them because on a shared machine the wall clock also measures the other jobs.
@@ -11,6 +12,12 @@
 //    particles per cell (32,000), K0 initial stress, rough base (mu 0.4), USL and MUSL, FLIP and APIC, dt
 //    at CFL 0.5. Median over repeats of a timed block of steps, at 1 and 2 threads; FLIP and APIC blocks
 //    alternate, and their cost ratio is the median of the paired blocks' CPU-time ratios.
+//    --scaling: the same column at 2, 1, 0.5, 0.25 and 0.125 m cells (8,000 to 2,048,000 particles), USF
+//    FLIP, 1 and 2 threads: particle-steps per second and the growth of the cost per particle-step.
+//    --profile scheme transfer steps threads: just `steps` steps of one configuration (for perf stat /
+//    perf record: the difference of two step counts gives the instructions per particle-step).
+//    --checksum: a hash of every particle's state after a few steps for each scheme, transfer and
+//    thread count (what "bit-identical" is checked with before and after a change of the kernels).
 // 2. Speed against error: the vibrating bar (period error vs the analytical mode) and the column's
 //    runout at t = 2 s against the finest resolution run here, for a few resolutions.
 #include <algorithm>
@@ -18,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstdint>
 #include <cstring>
 #include <ctime>
 #include <fstream>
@@ -47,6 +55,10 @@ std::string load_average() {
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
+}
+
+const char* scheme_name(mpm::io::Scheme s) {
+  return s == mpm::io::Scheme::USL ? "USL" : (s == mpm::io::Scheme::MUSL ? "MUSL" : "USF");
 }
 
 /// The paper's column (see the file comment) at cell size h and ppd x ppd particles per cell.
@@ -95,7 +107,7 @@ void throughput(bool quick, int steps_arg = 0, int repeats_arg = 0) {
               "APIC ==\n");
   const int steps = steps_arg > 0 ? steps_arg : (quick ? 50 : 200);
   const int repeats = repeats_arg > 0 ? repeats_arg : (quick ? 3 : 5);
-  for (auto scheme : {mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+  for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
     for (int threads : {1, 2}) {
       // FLIP and APIC advance side by side, their timed blocks alternating, so both see the same load.
       Deck deck = paper_column(1.0, 4, scheme);
@@ -115,7 +127,7 @@ void throughput(bool quick, int steps_arg = 0, int repeats_arg = 0) {
         cpu_rates[1].push_back(a.second);
         ratios.push_back(f.second / a.second);  // cost per particle-step, APIC / FLIP (CPU time)
       }
-      const char* name = scheme == mpm::io::Scheme::USL ? "USL" : "MUSL";
+      const char* name = scheme_name(scheme);
       for (int t = 0; t < 2; ++t)
         std::printf("%-4s %-4s threads %d: %6.2f M particle-steps/s wall (median of %d x %d steps; dt %.4g s); "
                     "%5.2f M per CPU-second; load average %s\n",
@@ -125,6 +137,80 @@ void throughput(bool quick, int steps_arg = 0, int repeats_arg = 0) {
                   name, threads, median(ratios), repeats);
     }
   }
+}
+
+/// Growth of the cost per particle-step with the problem size: the column at finer cells (4 x 4
+/// particles per cell), USF FLIP, 1 and 2 threads, median of `repeats` blocks of about 4 M particle-steps.
+void scaling(int repeats) {
+  std::printf("== Scaling: paper column, USF FLIP, 4 x 4 particles per cell, finer cells ==\n");
+  std::printf("%8s %10s %7s %14s %14s %8s %10s\n", "h (m)", "particles", "steps", "1 thread M/s", "2 threads M/s",
+              "2T / 1T", "ns/p-step");
+  double ns_first = 0;
+  for (double h : {2.0, 1.0, 0.5, 0.25, 0.125}) {
+    const Deck deck = paper_column(h, 4, mpm::io::Scheme::USF);
+    const int steps = std::max(2, static_cast<int>(4.0e6 / static_cast<double>(deck.particles.size())));
+    double rate[2] = {0, 0};
+    for (int threads : {1, 2}) {
+      mpm::core::Simulation sim(deck, threads);
+      for (int i = 0; i < 2; ++i) sim.step();
+      std::vector<double> rates;
+      for (int r = 0; r < repeats; ++r) rates.push_back(timed_block(sim, steps).first);
+      rate[threads - 1] = median(rates);
+    }
+    const double ns = 1e9 / rate[0];
+    if (ns_first == 0) ns_first = ns;
+    std::printf("%8.3f %10zu %7d %14.2f %14.2f %8.2f %10.1f (x%.2f of the smallest); load average %s\n", h,
+                deck.particles.size(), steps, rate[0] / 1e6, rate[1] / 1e6, rate[1] / rate[0], ns, ns / ns_first,
+                load_average().c_str());
+  }
+}
+
+/// `steps` steps of the column under one configuration, nothing else timed (for perf).
+void profile(mpm::io::Scheme scheme, mpm::io::Transfer transfer, int steps, int threads) {
+  Deck deck = paper_column(1.0, 4, scheme);
+  deck.analysis.transfer = transfer;
+  mpm::core::Simulation sim(deck, threads);
+  const auto t0 = Clock::now();
+  for (int i = 0; i < steps; ++i) sim.step();
+  const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf("%s %s, %d threads: %d steps of %zu particles, %.3f s, %.2f M particle-steps/s\n", scheme_name(scheme),
+              transfer == mpm::io::Transfer::APIC ? "APIC" : "FLIP", threads, steps, sim.particle_count(), s,
+              static_cast<double>(sim.particle_count()) * steps / s / 1e6);
+}
+
+/// FNV-1a over the bytes of every particle record (and APIC matrix) after `steps` steps.
+std::uint64_t state_hash(const mpm::core::Simulation& sim) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&](const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  for (const auto& r : sim.snapshot()) {
+    const double v[] = {r.coord_x, r.coord_y, r.displacement_x, r.displacement_y, r.velocity_x, r.velocity_y,
+                        r.stress_xx, r.stress_yy, r.stress_zz, r.tau_xy, r.strain_xx, r.strain_yy, r.gamma_xy,
+                        r.epsilon_v, r.volume, r.mass};
+    mix(&r.id, sizeof r.id);
+    mix(v, sizeof v);
+    mix(r.svars, r.nstate_vars * sizeof(double));
+  }
+  for (const auto& b : sim.affine_snapshot()) mix(b.data(), sizeof(double) * 4);
+  return h;
+}
+
+/// The state hash of the paper column after `steps` steps for every scheme, transfer and thread count.
+void checksum(int steps) {
+  std::printf("== State hash of the paper column after %d steps (bit-identity check) ==\n", steps);
+  for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL})
+    for (auto transfer : {mpm::io::Transfer::FLIP, mpm::io::Transfer::APIC})
+      for (int threads : {1, 2}) {
+        Deck deck = paper_column(1.0, 4, scheme);
+        deck.analysis.transfer = transfer;
+        mpm::core::Simulation sim(deck, threads);
+        for (int i = 0; i < steps; ++i) sim.step();
+        std::printf("%-4s %-4s threads %d: %016llx\n", scheme_name(scheme),
+                    transfer == mpm::io::Transfer::APIC ? "APIC" : "FLIP", threads,
+                    static_cast<unsigned long long>(state_hash(sim)));
+      }
 }
 
 /// The vibrating bar's first mode (see tests/verification/mpm/vibrating_bar_test.cpp): returns the
@@ -192,7 +278,7 @@ void accuracy(bool quick) {
 /// The paper's full 20 s runout at CFL 0.5 on 2 threads: stability, runout and time.
 void runout(int threads, mpm::io::Scheme scheme, double pic_blend) {
   std::printf("== Paper column, full 20 s runout (%s, FLIP with PIC blend %g, CFL 0.5, %d threads) ==\n",
-              scheme == mpm::io::Scheme::USL ? "USL" : (scheme == mpm::io::Scheme::MUSL ? "MUSL" : "USF"), pic_blend,
+              scheme_name(scheme), pic_blend,
               threads);
   Deck deck = paper_column(1.0, 4, scheme);
   deck.analysis.pic_blend = pic_blend;
@@ -221,10 +307,12 @@ void runout(int threads, mpm::io::Scheme scheme, double pic_blend) {
 
 int main(int argc, char** argv) {
   const char* usage =
-      "usage: mpm_core_benchmark [--quick | --throughput [steps [repeats]] | --accuracy | --runout [threads [usl|musl|usf "
-      "[pic_blend]]]]\n";
+      "usage: mpm_core_benchmark [--quick | --throughput [steps [repeats]] | --scaling [repeats] | --checksum [steps] | "
+      "--profile [usf|usl|musl [flip|apic [steps [threads]]]] | --accuracy | --runout [threads [usl|musl|usf [pic_blend]]]]\n";
   if (argc > 1 && std::strcmp(argv[1], "--quick") != 0 && std::strcmp(argv[1], "--throughput") != 0 &&
-      std::strcmp(argv[1], "--accuracy") != 0 && std::strcmp(argv[1], "--runout") != 0) {
+      std::strcmp(argv[1], "--accuracy") != 0 && std::strcmp(argv[1], "--runout") != 0 &&
+      std::strcmp(argv[1], "--scaling") != 0 && std::strcmp(argv[1], "--checksum") != 0 &&
+      std::strcmp(argv[1], "--profile") != 0) {
     const bool help = std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0;
     std::fputs(usage, help ? stdout : stderr);
     return help ? 0 : 2;
@@ -234,6 +322,21 @@ int main(int argc, char** argv) {
     runout(argc > 2 ? std::atoi(argv[2]) : 2,
            scheme == "usl" ? mpm::io::Scheme::USL : (scheme == "usf" ? mpm::io::Scheme::USF : mpm::io::Scheme::MUSL),
            argc > 4 ? std::atof(argv[4]) : 0.0);
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--profile") == 0) {
+    const std::string scheme = argc > 2 ? argv[2] : "usf", transfer = argc > 3 ? argv[3] : "flip";
+    profile(scheme == "usl" ? mpm::io::Scheme::USL : (scheme == "musl" ? mpm::io::Scheme::MUSL : mpm::io::Scheme::USF),
+            transfer == "apic" ? mpm::io::Transfer::APIC : mpm::io::Transfer::FLIP, argc > 4 ? std::atoi(argv[4]) : 200,
+            argc > 5 ? std::atoi(argv[5]) : 1);
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--scaling") == 0) {
+    scaling(argc > 2 ? std::max(1, std::atoi(argv[2])) : 3);
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--checksum") == 0) {
+    checksum(argc > 2 ? std::max(1, std::atoi(argv[2])) : 40);
     return 0;
   }
   if (argc > 1 && std::strcmp(argv[1], "--accuracy") == 0) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <type_traits>
 #include <limits>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "mpm/core/boundary_rules.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/shape_functions.hpp"
+#include "mpm/core/stencil_kernels.hpp"
 
 namespace mpm::core {
 
@@ -363,8 +365,7 @@ void Engine::run_step() {
     case io::Scheme::USF:  // update stress first: strain rate from the velocity of the mapped momentum
       p2g<Shape>(kMassMomentum);
       nodal_velocity(kMassMomentum);
-      update_stress<Shape>(StrainFrom::NodalVelocity);
-      p2g<Shape>(kForces);  // from the updated stress
+      update_stress<Shape>(StrainFrom::NodalVelocity, AfterStress::MapForces);  // and p2g of the forces from it
       update_grid(kForces);
       g2p<Shape>(G2pAlso::Nothing);
       break;
@@ -372,14 +373,14 @@ void Engine::run_step() {
       p2g<Shape>(kAllFields);
       update_grid(kAllFields);
       g2p<Shape>(G2pAlso::StrainIncrements);
-      update_stress<Shape>(StrainFrom::G2p);
+      update_stress<Shape>(StrainFrom::G2p, AfterStress::Nothing);
       break;
     case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
       p2g<Shape>(kAllFields);
       update_grid(kAllFields);
       g2p<Shape>(G2pAlso::RemapMomentum);
       nodal_velocity(kMomentum);
-      update_stress<Shape>(StrainFrom::NodalVelocity);
+      update_stress<Shape>(StrainFrom::NodalVelocity, AfterStress::Nothing);
       break;
   }
 }
@@ -467,12 +468,8 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
     double* wk = &weights_[k * 4 * W];
     if (shape_functions) {
       int bi = 0, bj = 0;
-      Shape::eval((cur_.x[p] - grid_.x0) * ihx, cur_.lx[p], cells_x_ - 1, bi, wk, wk + 2 * W);
-      Shape::eval((cur_.y[p] - grid_.y0) * ihy, cur_.ly[p], cells_y_ - 1, bj, wk + W, wk + 3 * W);
-      for (int a = 0; a < W; ++a) {
-        wk[2 * W + a] *= ihx;
-        wk[3 * W + a] *= ihy;
-      }
+      Shape::eval_xy((cur_.x[p] - grid_.x0) * ihx, (cur_.y[p] - grid_.y0) * ihy, cur_.lx[p], cur_.ly[p],
+                     cells_x_ - 1, cells_y_ - 1, ihx, ihy, bi, bj, wk);
       base_[k] = bi + bj * nx_;
       local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
       if (!stencil_offset_.empty()) {
@@ -480,35 +477,20 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
         stencil_offset_[2 * k + 1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
       }
     }
-    const double* wx = wk;
-    const double* wy = wk + W;
-    const double* dwx = wk + 2 * W;
-    const double* dwy = wk + 3 * W;
+    const StencilWeights<W> w(wk);
     const double m = cur_.mass[p];
-    const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
-    const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p], wk,
-                                                       Affine ? offset[0] : 0.0, Affine ? offset[1] : 0.0,
-                                                       grid_.hx, grid_.hy);
-    const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
-    const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
-    const double sxx = sp[0], syy = sp[1], sxy = sp[3];
-    const double mgx = m * gx_, mgy = m * gy_;
     double* band_row = g + local_[k];
-    for (int b = 0; b < W; ++b, band_row += row_stride) {
-      double* gn = band_row;
-      for (int a = 0; a < W; ++a, gn += 5) {
-        const double N = wx[a] * wy[b];
-        if (mass_momentum) {
-          gn[0] += m * N;
-          gn[1] += momentum.x(a, b, N);
-          gn[2] += momentum.y(a, b, N);
-        }
-        if (forces) {
-          const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
-          gn[3] += mgx * N - V * (dx * sxx + dy * sxy);
-          gn[4] += mgy * N - V * (dx * sxy + dy * syy);
-        }
-      }
+    if (mass_momentum) {
+      const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
+      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p], wk,
+                                                         Affine ? offset[0] : 0.0, Affine ? offset[1] : 0.0,
+                                                         grid_.hx, grid_.hy);
+      scatter_mass_momentum(band_row, row_stride, w, m, momentum);
+    }
+    if (forces) {
+      const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
+      const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
+      scatter_forces(band_row, row_stride, w, Double2{m * gx_, m * gy_}, V, sp[0], sp[1], sp[3]);
     }
   }
 }
@@ -599,7 +581,7 @@ void Engine::report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t
 
 /// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
 /// FLIP v += dt sum N a, PIC v = sum N v_new, blended (VelocityTransfer::particle_velocity); APIC
-/// (Affine) v = sum N v_new and the new B_p (Jiang et al. 2015; AffineUpdate); x += dt sum N v_new.
+/// (Affine) v = sum N v_new and the new B_p (Jiang et al. 2015; affine_matrix_at); x += dt sum N v_new.
 /// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
 /// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
 /// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
@@ -616,12 +598,8 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   const double h = std::min(grid_.hx, grid_.hy);
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const std::uint32_t p = order_[k];
-    const double* wx = &weights_[k * 4 * W];
-    const double* wy = wx + W;
-    const double* dwx = wx + 2 * W;
-    const double* dwy = wx + 3 * W;
-    double vgx = 0, vgy = 0, agx = 0, agy = 0;
-    double lxx = 0, lyy = 0, lxy = 0, lyx = 0;
+    const double* wk = &weights_[k * 4 * W];
+    const StencilWeights<W> w(wk);
     const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
     double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
     if constexpr (Affine)
@@ -629,59 +607,33 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         dxs[a] = offset[0] + a * grid_.hx;
         dys[a] = offset[1] + a * grid_.hy;
       }
-    AffineUpdate<Shape> affine;  // APIC: the new matrix (velocity_transfer.hpp)
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      const double* u = &updated_[4 * node_row];
-      for (int a = 0; a < W; ++a, u += 4) {
-        const double N = wx[a] * wy[b];
-        vgx += N * u[0];
-        vgy += N * u[1];
-        if constexpr (Affine) {
-          affine.add(N, dwx[a] * wy[b], wx[a] * dwy[b], dxs[a], dys[b], u[0], u[1]);
-        } else {
-          agx += N * u[2];
-          agy += N * u[3];
-        }
-        if (strain_increments) {
-          const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
-          lxx += dx * u[0];
-          lyy += dy * u[1];
-          lxy += dy * u[0];
-          lyx += dx * u[1];
-        }
-      }
-    }
-    if (strain_increments) {
-      double* de = &dstrain_[3 * k];
-      de[0] = dt_ * lxx;
-      de[1] = dt_ * lyy;
-      de[2] = dt_ * (lxy + lyx);
-    }
-    const double vx = transfer_.particle_velocity(cur_.vx[p], vgx, agx, dt_);
-    const double vy = transfer_.particle_velocity(cur_.vy[p], vgy, agy, dt_);
+    // Bilinear APIC reads C_p = sum v grad w^T (the velocity gradient) as well (velocity_transfer.hpp).
+    constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
+    const GridSums sums = gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]),
+                                                    static_cast<std::size_t>(nx_), w, dxs, dys,
+                                                    strain_increments || kBilinearAffine);
+    if (strain_increments) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
+    const double vgx = sums.v[0], vgy = sums.v[1];
+    const double vx = transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
+    const double vy = transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
     const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
     nxt_.vx[k] = vx;
     nxt_.vy[k] = vy;
+    // APIC: B = sum N v (x_i - x_p)^T and C = sum v grad w^T, both xx xy yx yy; the new matrix is stored
+    // as read at x^(n+1), and MUSL's remap reads it at x^n (affine_matrix_at).
+    const double B[4] = {sums.b_dx[0], sums.b_dy[0], sums.b_dx[1], sums.b_dy[1]};
+    const double C[4] = {sums.L.d_dx[0], sums.L.d_dy[0], sums.L.d_dx[1], sums.L.d_dy[1]};
     if constexpr (Affine)
-      affine.matrix((x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1, grid_.hx, grid_.hy,
-                    &nxt_.affine[4 * k]);
+      affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
+                       grid_.hx, grid_.hy, &nxt_.affine[4 * k]);
     if (remap_momentum) {
-      double B_old[4] = {0, 0, 0, 0};  // APIC: the new matrix read at x^n, where the remap maps it
+      double B_old[4] = {0, 0, 0, 0};
       if constexpr (Affine)
-        affine.matrix((cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
-                      grid_.hx, grid_.hy, B_old);
-      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B_old, wx, Affine ? offset[0] : 0.0,
+        affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_, cells_x_ - 1,
+                         cells_y_ - 1, grid_.hx, grid_.hy, B_old);
+      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B_old, wk, Affine ? offset[0] : 0.0,
                                                          Affine ? offset[1] : 0.0, grid_.hx, grid_.hy);
-      double* band_row = g + local_[k];
-      for (int b = 0; b < W; ++b, band_row += row_stride) {
-        double* gn = band_row;
-        for (int a = 0; a < W; ++a, gn += 5) {
-          const double N = wx[a] * wy[b];
-          gn[1] += momentum.x(a, b, N);
-          gn[2] += momentum.y(a, b, N);
-        }
-      }
+      scatter_momentum(g + local_[k], row_stride, w, momentum);
     }
     nxt_.x[k] = x;
     nxt_.y[k] = y;
@@ -732,11 +684,14 @@ struct MixedMaterials {
 /// Stress update: strain increment from the nodal velocity at the particle (or the one g2p stored),
 /// the selected checkerboard remedy (stress_remedy.hpp), then the material's stress update and the
 /// carried state (next buffer). A nodal remedy needs every chunk's values at the nodes first, hence
-/// its barriers.
+/// its barriers. With AfterStress::MapForces (USF) each chunk then maps its forces from the updated
+/// stress into its band (p2g_chunk, kForces): the same sums, in the same order, as a separate p2g pass
+/// after a barrier, while the chunk's particles are still in cache.
 template <class Shape>
-void Engine::update_stress(StrainFrom from) {
+void Engine::update_stress(StrainFrom from, AfterStress then) {
   wait_for_previous_phase();
   const bool strain_ready = from == StrainFrom::G2p;
+  const bool map_forces = then == AfterStress::MapForces;
   if (nodal_projection(smoothing_).values > 0) {
     for_each_chunk([&](std::size_t c) {
       if (!strain_ready) compute_strain_increments<Shape>(c);
@@ -748,6 +703,7 @@ void Engine::update_stress(StrainFrom from) {
     for_each_chunk([&](std::size_t c) {
       gather_remedy_values<Shape>(c);
       update_material_state(c);
+      if (map_forces) p2g_chunk<Shape, false>(c, kForces);
     });
   } else {
     const bool cell_remedy = is_cell_remedy(smoothing_);
@@ -755,6 +711,7 @@ void Engine::update_stress(StrainFrom from) {
       if (!strain_ready) compute_strain_increments<Shape>(c);
       if (cell_remedy) apply_cell_remedy(c);
       update_material_state(c);
+      if (map_forces) p2g_chunk<Shape, false>(c, kForces);
     });
   }
 }
@@ -765,27 +722,9 @@ template <class Shape>
 void Engine::compute_strain_increments(std::size_t c) {
   constexpr int W = Shape::kWidth;
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const double* wk = &weights_[k * 4 * W];
-    const double* wx = wk;
-    const double* wy = wk + W;
-    const double* dwx = wk + 2 * W;
-    const double* dwy = wk + 3 * W;
-    double lxx = 0, lyy = 0, lxy = 0, lyx = 0;  // dvx/dx, dvy/dy, dvx/dy, dvy/dx
-    std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
-      const double* v = &velocity_[2 * node_row];
-      for (int a = 0; a < W; ++a, v += 2) {
-        const double dx = dwx[a] * wy[b], dy = wx[a] * dwy[b];
-        lxx += dx * v[0];
-        lyy += dy * v[1];
-        lxy += dy * v[0];
-        lyx += dx * v[1];
-      }
-    }
-    double* de = &dstrain_[3 * k];
-    de[0] = dt_ * lxx;
-    de[1] = dt_ * lyy;
-    de[2] = dt_ * (lxy + lyx);
+    const StencilWeights<W> w(&weights_[k * 4 * W]);
+    gather_velocity_gradient(velocity_.data(), 2, static_cast<std::size_t>(base_[k]), static_cast<std::size_t>(nx_), w)
+        .strain_increment(dt_, &dstrain_[3 * k]);
   }
 }
 
@@ -896,12 +835,9 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     const double* de = &dstrain_[3 * k];
     double* s = &nxt_.stress[4 * k];  // updated in place (a whole-block copy: no partial-store stalls)
     std::copy_n(&cur_.stress[4 * p], 4, s);
-    double sv[kStateVariables];
-    const double* sv_in = &cur_.svars[p * kStateVariables];
-    for (std::size_t i = 0; i < kStateVariables; ++i) sv[i] = sv_in[i];
+    double* sv = &nxt_.svars[k * kStateVariables];  // updated in place, as the stress
+    std::copy_n(&cur_.svars[p * kStateVariables], kStateVariables, sv);
     dispatch(cur_.material[p], s, de, sv);
-    double* sv_out = &nxt_.svars[k * kStateVariables];
-    for (std::size_t i = 0; i < kStateVariables; ++i) sv_out[i] = sv[i];
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
     nxt_.epsv[k] = cur_.epsv[p] + dv;

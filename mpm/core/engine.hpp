@@ -47,6 +47,12 @@ enum class StrainFrom {
   G2p,            ///< the increment g2p stored (G2pAlso::StrainIncrements)
 };
 
+/// What update_stress does next with each chunk, while its particles are in cache.
+enum class AfterStress {
+  Nothing,
+  MapForces,  ///< USF: p2g of the forces from the updated stress (the same sums as a separate p2g pass)
+};
+
 struct ParticleArrays {
   std::vector<std::int64_t> id;
   std::vector<std::uint32_t> material;  ///< index into Engine::materials_
@@ -86,7 +92,7 @@ class Engine {
   template <class Shape>
   void g2p(G2pAlso also);  ///< grid to particles: velocity and position
   template <class Shape>
-  void update_stress(StrainFrom from);  ///< strain increment, remedy, material update
+  void update_stress(StrainFrom from, AfterStress then);  ///< strain increment, remedy, material update
 
   // --- their parts (particle parts per chunk, node parts per row) ---
   template <class F>

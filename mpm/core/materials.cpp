@@ -31,6 +31,9 @@ MohrCoulomb MohrCoulomb::from(const io::MaterialSpec& spec) {
   m.peak_surface = constitutive::MohrCoulombSurface({m.phi_peak, m.psi_peak, m.c_peak, m.tension_cutoff});
   m.residual_surface =
       constitutive::MohrCoulombSurface({m.phi_residual, m.psi_residual, m.c_residual, m.tension_cutoff});
+  const constitutive::IsotropicElasticity el{m.bulk, m.shear};
+  m.peak_map = constitutive::MohrCoulombReturnMap(el, m.peak_surface);
+  m.residual_map = constitutive::MohrCoulombReturnMap(el, m.residual_surface);
   return m;
 }
 
@@ -59,21 +62,34 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
   }
   const constitutive::PlaneStrainStress s = Eigen::Map<const Eigen::Vector4d>(stress);
   const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
+  const constitutive::IsotropicElasticity el{bulk, shear};
+  const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, el);
   const constitutive::MohrCoulombStrength strength{svars[0], svars[1], svars[2], tension_cutoff};
+  const auto is_strength_of = [&](const constitutive::MohrCoulombReturnMap& map) {
+    if (!map.valid()) return false;
+    const constitutive::MohrCoulombStrength& c = map.surface().strength;
+    return strength.friction == c.friction && strength.dilation == c.dilation && strength.cohesion == c.cohesion;
+  };
   const auto has_angles_of = [&](const constitutive::MohrCoulombSurface& cached) {
     return strength.friction == cached.strength.friction && strength.dilation == cached.strength.dilation;
   };
-  constitutive::MohrCoulombSurface surface;
-  if (has_angles_of(peak_surface)) {
-    surface = peak_surface;
-  } else if (has_angles_of(residual_surface)) {
-    surface = residual_surface;
+  constitutive::MohrCoulombUpdate r;
+  if (is_strength_of(peak_map)) {
+    r = peak_map.apply(trial);
+  } else if (is_strength_of(residual_map)) {
+    r = residual_map.apply(trial);
   } else {
-    surface = constitutive::MohrCoulombSurface(strength);
+    constitutive::MohrCoulombSurface surface;
+    if (has_angles_of(peak_surface)) {
+      surface = peak_surface;
+    } else if (has_angles_of(residual_surface)) {
+      surface = residual_surface;
+    } else {
+      surface = constitutive::MohrCoulombSurface(strength);
+    }
+    surface.strength = strength;  // the trigonometry depends on the angles only
+    r = constitutive::mohr_coulomb_return(trial, el, surface);
   }
-  surface.strength = strength;  // the trigonometry depends on the angles only
-  const constitutive::MohrCoulombUpdate r =
-      constitutive::mohr_coulomb_update(s, de, constitutive::IsotropicElasticity{bulk, shear}, surface);
   Eigen::Map<Eigen::Vector4d> out(stress);
   out = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them

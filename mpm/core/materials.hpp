@@ -47,9 +47,12 @@ struct MohrCoulomb {
   double tension_cutoff = 0;
   bool softening = false;
   /// The peak and residual strengths with their sin / cos evaluated once (from()); update() uses them
-  /// when the particle's (phi, psi, c) equal one of them, and evaluates its own only inside the
+  /// when the particle's (phi, psi) equal one of them, and evaluates its own only inside the
   /// softening range (or for other angles read from a resume file).
   constitutive::MohrCoulombSurface peak_surface, residual_surface;
+  /// Their return maps (planes and active-set matrices formed once), used when the particle's whole
+  /// strength (phi, psi, c) is the peak or the residual one: the same result bit for bit, less work.
+  constitutive::MohrCoulombReturnMap peak_map, residual_map;
   static constexpr std::size_t kStateCount = 7;
   static MohrCoulomb from(const io::MaterialSpec& spec);
   void initial_state(double* svars) const;

@@ -18,6 +18,8 @@
 // most the 3 nodes nearest to it per axis: nearest node n and n - 1, n + 1.
 #include <cmath>
 
+#include "mpm/core/lanes.hpp"
+
 namespace mpm::core {
 
 /// Bilinear hat functions: `kWidth` = 2 nodes per axis.
@@ -34,6 +36,17 @@ struct LinearShape {
     w[1] = t;
     dw[0] = -1.0;
     dw[1] = 1.0;
+  }
+  /// Both axes of a particle: the stencil's first node (bi, bj) and its weights block
+  /// wk = [wx (W), wy (W), dwx / hx (W), dwy / hy (W)] (ih = 1 / h).
+  static void eval_xy(double sx, double sy, double lx, double ly, int max_i, int max_j, double ihx, double ihy,
+                      int& bi, int& bj, double* wk) {
+    eval(sx, lx, max_i, bi, wk, wk + 2 * kWidth);
+    eval(sy, ly, max_j, bj, wk + kWidth, wk + 3 * kWidth);
+    for (int a = 0; a < kWidth; ++a) {
+      wk[2 * kWidth + a] *= ihx;
+      wk[3 * kWidth + a] *= ihy;
+    }
   }
 };
 
@@ -68,6 +81,39 @@ struct GimpShape {
     base = n - 1;
     const double il = 1.0 / l;
     for (int a = 0; a < kWidth; ++a) node(s - static_cast<double>(base + a), l, il, w[a], dw[a]);
+  }
+  /// node() for two (r, l) pairs at once (the x and y axes of a particle), without branches: the four
+  /// pieces are evaluated and one is selected per lane (the piece a node falls in changes from particle
+  /// to particle, which a branch predictor cannot follow). Each piece is node()'s expression, so the
+  /// values are node()'s bit for bit.
+  static void node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) {
+    const Double2 one = splat2(1.0), zero = splat2(0.0);
+    const Double2 a = abs2(r);
+    const Double2 sgn = select(r < zero, splat2(-1.0), one);
+    const Double2 d = one + l - a;
+    const Double2 w_edge = 0.25 * d * d * il, dw_edge = -0.5 * sgn * d * il;
+    const Double2 w_hat = one - a, dw_hat = -sgn;
+    const Double2 w_core = one - 0.5 * (r * r + l * l) * il, dw_core = -r * il;
+    const Mask2 outside = a >= one + l, edge = a > one - l, hat = a > l;
+    w = select(outside, zero, select(edge, w_edge, select(hat, w_hat, w_core)));
+    dw = select(outside, zero, select(edge, dw_edge, select(hat, dw_hat, dw_core)));
+  }
+  /// Both axes of a particle (see LinearShape::eval_xy), the same values as eval() per axis.
+  static void eval_xy(double sx, double sy, double lx, double ly, int /*max_i*/, int /*max_j*/, double ihx,
+                      double ihy, int& bi, int& bj, double* wk) {
+    bi = static_cast<int>(std::floor(sx + 0.5)) - 1;
+    bj = static_cast<int>(std::floor(sy + 0.5)) - 1;
+    const Double2 s{sx, sy}, l{lx, ly}, base{static_cast<double>(bi), static_cast<double>(bj)};
+    const Double2 il = 1.0 / l, ih{ihx, ihy};
+    for (int a = 0; a < kWidth; ++a) {
+      Double2 w, dw;
+      node2(s - (base + static_cast<double>(a)), l, il, w, dw);
+      dw *= ih;
+      wk[a] = w[0];
+      wk[kWidth + a] = w[1];
+      wk[2 * kWidth + a] = dw[0];
+      wk[3 * kWidth + a] = dw[1];
+    }
   }
 };
 

@@ -30,6 +30,7 @@
 // affine field back before the constraints are applied again.
 #include <cstddef>
 
+#include "mpm/core/lanes.hpp"
 #include "mpm/core/shape_functions.hpp"
 #include "mpm/io/deck.hpp"
 
@@ -75,99 +76,70 @@ inline void affine_axis_weights(LinearShape, const double* /*w*/, const double* 
   for (int k = 0; k < LinearShape::kWidth; ++k) a[k] = dw[k];
 }
 
-/// g2p's new APIC matrix of one particle, accumulated over its stencil: node (a, b) with weight N, weight
-/// gradient (dNx, dNy) per metre, node minus particle (dx, dy) at x^n and updated velocity (vx, vy).
-/// `matrix(s_x, s_y, ...)` is the matrix B_p for the particle at lattice coordinates (s_x, s_y) (in units
-/// of h from the lattice origin), the one p2g (or MUSL's remap) reads there with D_p at that position.
-template <class Shape>
-struct AffineUpdate;
+/// g2p's new APIC matrix B_p of one particle, as read at lattice coordinates (sx, sy) (units of h from
+/// the lattice origin; `max_cell_*` the last cell per axis) with D_p at that position, from the two
+/// stencil sums at x^n: B = sum_i N v_i (x_i - x_p^n)^T and C = sum_i v_i grad w_ip^T (xx xy yx yy).
+/// - uGIMP: B, the same wherever it is read (Jiang et al. 2015, the APIC transfer; Jiang, Schroeder &
+///   Teran 2017): read with D_p(x^(n+1)) at the next p2g, the transfers conserve angular momentum
+///   exactly, and D_p >= lp h / 2 keeps B D_p^-1 bounded.
+inline void affine_matrix_at(GimpShape, const double* B, const double* /*C*/, double /*sx*/, double /*sy*/,
+                             int /*max_cell_x*/, int /*max_cell_y*/, double /*hx*/, double /*hy*/, double* out) {
+  for (int k = 0; k < 4; ++k) out[k] = B[k];
+}
 
-/// uGIMP: B = sum_i N v_i (x_i - x_p^n)^T, the same wherever it is read (Jiang et al. 2015, the APIC
-/// transfer; Jiang, Schroeder & Teran 2017): read with D_p(x^(n+1)) at the next p2g, the transfers
-/// conserve angular momentum exactly, and D_p >= lp h / 2 keeps B D_p^-1 bounded.
-template <>
-struct AffineUpdate<GimpShape> {
-  double B[4] = {0, 0, 0, 0};
-  void add(double N, double /*dNx*/, double /*dNy*/, double dx, double dy, double vx, double vy) {
-    B[0] += N * vx * dx;
-    B[1] += N * vx * dy;
-    B[2] += N * vy * dx;
-    B[3] += N * vy * dy;
-  }
-  void matrix(double /*sx*/, double /*sy*/, int /*max_cell_x*/, int /*max_cell_y*/, double /*hx*/, double /*hy*/,
-              double* out) const {
-    for (int k = 0; k < 4; ++k) out[k] = B[k];
-  }
-};
-
-/// Bilinear: C = sum_i v_i grad w_ip^T, which is B D_p^-1 at x^n (the identity APIC 2015 notes for
-/// multilinear weights), and B = C D_p at the position where it is read, D_p = diag(t (1 - t) h^2) with
-/// t the position in its cell: p2g then reads C itself. Storing B(x^n) would be read as B(x^n)
-/// D_p(x^(n+1))^-1, unbounded where D_p vanishes on a grid line (the nearly empty node ahead of a front
-/// runs away: the sliding block at step 70). The price: the affine angular momentum m eps : (C D_p)^T
-/// follows D_p along the particle's path, so bilinear APIC conserves angular momentum only to O(dt)
-/// per step (the spinning disk, tests/verification/mpm/apic_transfer_test.cpp).
-template <>
-struct AffineUpdate<LinearShape> {
-  double C[4] = {0, 0, 0, 0};
-  void add(double /*N*/, double dNx, double dNy, double /*dx*/, double /*dy*/, double vx, double vy) {
-    C[0] += vx * dNx;
-    C[1] += vx * dNy;
-    C[2] += vy * dNx;
-    C[3] += vy * dNy;
-  }
-  void matrix(double sx, double sy, int max_cell_x, int max_cell_y, double hx, double hy, double* out) const {
-    const double Dxx = inertia(sx, max_cell_x) * hx * hx, Dyy = inertia(sy, max_cell_y) * hy * hy;
-    out[0] = C[0] * Dxx;
-    out[1] = C[1] * Dyy;
-    out[2] = C[2] * Dxx;
-    out[3] = C[3] * Dyy;
-  }
-  /// D_p / h^2 along one axis: t (1 - t), t the position in the cell LinearShape::eval picks.
-  static double inertia(double s, int max_cell) {
+/// - Bilinear: C (= B D_p^-1 at x^n, the identity APIC 2015 notes for multilinear weights) times D_p at
+///   the position where it is read, D_p = diag(t (1 - t) h^2) with t the position in its cell: p2g then
+///   reads C itself. B(x^n) read with D_p(x^(n+1))^-1 would be unbounded where D_p vanishes on a grid
+///   line (the nearly empty node ahead of a front runs away: the sliding block at step 70). The price:
+///   the affine angular momentum m eps : (C D_p)^T follows D_p along the particle's path, so bilinear
+///   APIC conserves angular momentum only to O(dt) per step (the spinning disk,
+///   tests/verification/mpm/apic_transfer_test.cpp).
+inline void affine_matrix_at(LinearShape, const double* /*B*/, const double* C, double sx, double sy, int max_cell_x,
+                             int max_cell_y, double hx, double hy, double* out) {
+  const auto inertia = [](double s, int max_cell) {  // D_p / h^2 = t (1 - t), the cell LinearShape::eval picks
     int base = 0;
     double w[2], dw[2];
     LinearShape::eval(s, 0.0, max_cell, base, w, dw);
     return w[0] * w[1];
-  }
-};
+  };
+  const double Dxx = inertia(sx, max_cell_x) * hx * hx, Dyy = inertia(sy, max_cell_y) * hy * hy;
+  out[0] = C[0] * Dxx;
+  out[1] = C[1] * Dyy;
+  out[2] = C[2] * Dxx;
+  out[3] = C[3] * Dyy;
+}
 
 /// What one particle adds to the momentum of node (a, b) of its stencil (weight N = wx_a wy_b):
 /// m_p N v_p, and with APIC (Affine) also m_p B_p (ax_a wy_b, wx_a ay_b) = m_p N B_p D_p^-1 (x_i - x_p).
 /// Built once per particle per p2g (and per MUSL remap) from its weights at its current position.
+/// The x and y components go together in one Double2 (lanes.hpp), each lane the component's sum
+///   x: m vx N + (m Bxx ax_a) wy_b + (m Bxy ay_b) wx_a,   y: m vy N + (m Byx ax_a) wy_b + (m Byy ay_b) wx_a.
 template <class Shape, bool Affine>
 struct MomentumContribution {
   static constexpr int W = Shape::kWidth;
-  double mvx = 0, mvy = 0;
-  /// m_p B_p times the per-axis affine weights (affine_axis_weights): xx ax_a, xy ay_b, yx ax_a, yy ay_b
-  double bxx[W] = {}, bxy[W] = {}, byx[W] = {}, byy[W] = {};
-  const double* wx = nullptr;
-  const double* wy = nullptr;
+  Double2 mv = splat2(0.0);
+  /// m_p B_p times the per-axis affine weights (affine_axis_weights): (xx ax_a, yx ax_a), (xy ay_b, yy ay_b)
+  Double2 b_ax[W] = {}, b_ay[W] = {};
 
   /// `w` = the particle's stored weights (wx, wy, dwx, dwy; W each, gradients per metre), `B` its
   /// matrix (read only when Affine), (ox, oy) = first stencil node minus particle, m.
   MomentumContribution(double m, double vx, double vy, const double* B, const double* w, double ox, double oy,
                        double hx, double hy)
-      : mvx(m * vx), mvy(m * vy), wx(w), wy(w + W) {
+      : mv{m * vx, m * vy} {
     if constexpr (Affine) {
       double ax[W], ay[W];
       affine_axis_weights(Shape{}, w, w + 2 * W, ox, hx, ax);
       affine_axis_weights(Shape{}, w + W, w + 3 * W, oy, hy, ay);
       for (int k = 0; k < W; ++k) {
-        bxx[k] = m * B[0] * ax[k];
-        bxy[k] = m * B[1] * ay[k];
-        byx[k] = m * B[2] * ax[k];
-        byy[k] = m * B[3] * ay[k];
+        b_ax[k] = Double2{m * B[0] * ax[k], m * B[2] * ax[k]};
+        b_ay[k] = Double2{m * B[1] * ay[k], m * B[3] * ay[k]};
       }
     }
   }
-  double x(int a, int b, double N) const {
-    if constexpr (Affine) return mvx * N + bxx[a] * wy[b] + bxy[b] * wx[a];
-    return mvx * N;
-  }
-  double y(int a, int b, double N) const {
-    if constexpr (Affine) return mvy * N + byx[a] * wy[b] + byy[b] * wx[a];
-    return mvy * N;
+  /// Node (a, b) with weight N = wx_a wy_b (wx_a, wy_b the axis weights).
+  Double2 xy(int a, int b, double N, double wx_a, double wy_b) const {
+    if constexpr (Affine) return mv * N + b_ax[a] * wy_b + b_ay[b] * wx_a;
+    return mv * N;
   }
 };
 

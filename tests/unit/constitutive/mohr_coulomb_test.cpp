@@ -1,7 +1,8 @@
 // Unit tests of the plane-strain Mohr-Coulomb return mapping (constitutive/mohr_coulomb.hpp):
 // every region (face, both edges, apex, tension cutoff and its corners), the flow rule, admissibility,
 // bit-identical elastic states, c = 0 / tiny c, the consistent tangent against central differences, and
-// the update with precomputed trigonometry (MohrCoulombSurface) equal bit for bit to the plain one.
+// the update with precomputed trigonometry (MohrCoulombSurface) and the return map (MohrCoulombReturnMap)
+// equal bit for bit to the plain one.
 #include "constitutive/mohr_coulomb.hpp"
 
 #include <gtest/gtest.h>
@@ -275,6 +276,31 @@ TEST_P(MohrCoulombTangent, PrecomputedSurfaceGivesTheSameUpdateBitForBit) {
   }
   const auto r = constitutive::mohr_coulomb_return(tc.trial, kElastic, surface);
   EXPECT_EQ(r.region, tc.region);
+}
+
+// The return map (planes and active-set matrices formed once per surface) must return the same stress,
+// plastic strain and region as the plain return, bit for bit, in every region, and on a sweep of trials
+// around each case (which visits the neighbouring regions and the corners of the tension cutoff).
+TEST_P(MohrCoulombTangent, ReturnMapGivesTheSameReturnBitForBit) {
+  const TangentCase& tc = GetParam();
+  const constitutive::MohrCoulombSurface surface(tc.st);
+  const constitutive::MohrCoulombReturnMap map(kElastic, surface);
+  const auto same = [&](const PlaneStrainStress& trial) {
+    const auto a = constitutive::mohr_coulomb_return(trial, kElastic, surface);
+    const auto b = map.apply(trial);
+    EXPECT_EQ(a.region, b.region);
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(a.stress[i], b.stress[i]) << i;
+      EXPECT_EQ(a.plastic_strain_increment[i], b.plastic_strain_increment[i]) << i;
+    }
+  };
+  same(tc.trial);
+  EXPECT_EQ(map.apply(tc.trial).region, tc.region);
+  const double scale = tc.trial.cwiseAbs().maxCoeff();
+  for (int k = 0; k < 200; ++k) {
+    const double u = 0.37 * k, w = 0.61 * k, z = 0.83 * k;
+    same(tc.trial + 0.5 * scale * PlaneStrainStress(std::sin(u), std::cos(w), std::sin(z), std::cos(u + z)));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

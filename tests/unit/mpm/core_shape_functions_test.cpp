@@ -64,6 +64,50 @@ TEST(ShapeFunctions, GimpTendsToLinearForPointParticles) {
   }
 }
 
+// The engine evaluates both axes at once without branches (GimpShape::node2 / eval_xy, two lanes):
+// the weights and gradients must be eval()'s per axis bit for bit, in every piece of the function
+// (outside, edge, hat, core), on the piece boundaries and at both signs of r.
+template <class Shape>
+void check_eval_xy_matches_eval(double lx, double ly) {
+  constexpr int W = Shape::kWidth;
+  const double ihx = 1.0 / 0.7, ihy = 1.0 / 1.3;
+  for (double s = 1.0; s <= 4.0; s += 0.0037) {
+    const double sx = s, sy = 5.0 - 0.61 * s;
+    int bi = 0, bj = 0, ex = 0, ey = 0;
+    double wk[4 * W], wx[W], dwx[W], wy[W], dwy[W];
+    Shape::eval_xy(sx, sy, lx, ly, 10, 10, ihx, ihy, bi, bj, wk);
+    Shape::eval(sx, lx, 10, ex, wx, dwx);
+    Shape::eval(sy, ly, 10, ey, wy, dwy);
+    ASSERT_EQ(bi, ex);
+    ASSERT_EQ(bj, ey);
+    for (int a = 0; a < W; ++a) {
+      EXPECT_EQ(wk[a], wx[a]) << s;
+      EXPECT_EQ(wk[W + a], wy[a]) << s;
+      EXPECT_EQ(wk[2 * W + a], dwx[a] * ihx) << s;
+      EXPECT_EQ(wk[3 * W + a], dwy[a] * ihy) << s;
+    }
+  }
+}
+
+TEST(ShapeFunctions, BothAxesAtOnceGiveTheSameWeightsBitForBit) {
+  check_eval_xy_matches_eval<LinearShape>(0.0, 0.0);
+  for (double l : {0.05, 0.125, 0.25, 0.5}) check_eval_xy_matches_eval<GimpShape>(l, 0.5 * l);
+  // Each piece and its boundaries, both signs: node2 against node, lane by lane.
+  for (double l : {0.125, 0.5})
+    for (double r : {-1.6, -1.0 - l, -1.2, -1.0 + l, -0.6, -l, -0.05, 0.0, -0.0, 0.05, l, 0.6, 1.0 - l, 1.2, 1.0 + l, 1.6}) {
+      double w, dw;
+      GimpShape::node(r, l, w, dw);
+      mpm::core::Double2 w2, dw2;
+      GimpShape::node2(mpm::core::Double2{r, -r}, mpm::core::splat2(l), mpm::core::splat2(1.0 / l), w2, dw2);
+      double wm, dwm;
+      GimpShape::node(-r, l, wm, dwm);
+      EXPECT_EQ(w2[0], w) << r;
+      EXPECT_EQ(dw2[0], dw) << r;
+      EXPECT_EQ(w2[1], wm) << r;
+      EXPECT_EQ(dw2[1], dwm) << r;
+    }
+}
+
 TEST(ShapeFunctions, GimpValuesAtKnownPoints) {
   // Particle at a node (r = 0): N = 1 - l/2; at r = 1: N = l/4 (overlap of the particle with the next cell).
   const double l = 0.25;

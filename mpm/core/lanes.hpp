@@ -1,0 +1,21 @@
+#pragma once
+// Two doubles operated on together: one SSE2 register on any x86-64 (and one NEON register on AArch64),
+// through the GCC/Clang vector extension: no intrinsics, no -march flag. Each operation acts on each lane
+// exactly as the scalar operation does (IEEE, no reassociation), so a kernel written on Double2 gives
+// the scalar kernel's results bit for bit. The lanes are the x and y axes of one particle, or the x and
+// y components of one vector; comparisons give lane masks for select(), which is what keeps the
+// piecewise shape functions free of branches.
+#include <cstdint>
+
+namespace mpm::core {
+
+using Double2 = double __attribute__((vector_size(16)));
+using Mask2 = std::int64_t __attribute__((vector_size(16)));
+
+inline Double2 splat2(double v) { return Double2{v, v}; }
+/// Per lane: m ? a : b.
+inline Double2 select(Mask2 m, Double2 a, Double2 b) { return m ? a : b; }
+/// Per lane |v| (-0.0 stays -0.0: callers only compare it or use it where the sign of zero is lost).
+inline Double2 abs2(Double2 v) { return select(v < splat2(0.0), -v, v); }
+
+}  // namespace mpm::core

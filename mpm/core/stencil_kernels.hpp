@@ -1,0 +1,150 @@
+#pragma once
+// The per-particle loops over a particle's node stencil (W x W nodes of tensor-product weights), shared
+// by the engine's phases: scatter into a chunk's band (p2g: mass, momentum, forces) and gather from the
+// nodal fields (g2p: velocity, acceleration, APIC matrix, velocity gradient).
+//
+// Written for the compiler: the particle's weights are copied into a local StencilWeights first (the
+// band and the weight arrays can then not alias, so no runtime alias checks per particle), and the x
+// and y components of each nodal vector go through one Double2 (lanes.hpp: one SSE2 instruction for
+// both). Every lane computes the scalar expression of the component, in the same order, and each node's
+// sums are accumulated in the same particle order as before: the results are the scalar loops' bit for
+// bit (checked by `mpm_core_benchmark --checksum` and the regression tests).
+//
+// Band layout (engine.hpp): 5 values per node (m, px, py, fx, fy), rows `row_stride` values apart.
+#include <cstddef>
+#include <cstring>
+
+#include "mpm/core/lanes.hpp"
+
+namespace mpm::core {
+
+/// Unaligned load / store of two consecutive doubles.
+inline Double2 load2(const double* p) {
+  Double2 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void store2(double* p, Double2 v) { std::memcpy(p, &v, sizeof v); }
+
+/// A particle's weights block [wx, wy, dwx, dwy] (W each; gradients per metre) in registers.
+template <int W>
+struct StencilWeights {
+  double wx[W], wy[W], dwx[W], dwy[W];
+  explicit StencilWeights(const double* wk) {
+    for (int a = 0; a < W; ++a) {
+      wx[a] = wk[a];
+      wy[a] = wk[W + a];
+      dwx[a] = wk[2 * W + a];
+      dwy[a] = wk[3 * W + a];
+    }
+  }
+  double N(int a, int b) const { return wx[a] * wy[b]; }
+};
+
+/// p2g of mass and momentum (Sulsky et al. 1994, eqs. 14-15): m N into slot 0, the momentum
+/// `momentum.xy(a, b, N, wx_a, wy_b)` (velocity_transfer.hpp MomentumContribution) into slots 1-2.
+template <int W, class Momentum>
+inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, const StencilWeights<W>& w, double m,
+                                  const Momentum& momentum) {
+  for (int b = 0; b < W; ++b, band_row += row_stride) {
+    double* gn = band_row;
+    for (int a = 0; a < W; ++a, gn += 5) {
+      const double N = w.N(a, b);
+      gn[0] += m * N;
+      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, N, w.wx[a], w.wy[b]));
+    }
+  }
+}
+
+/// Only the momentum (MUSL's remap of the updated particle momentum, Sulsky, Zhou & Schreyer 1995, eq. 20).
+template <int W, class Momentum>
+inline void scatter_momentum(double* band_row, std::size_t row_stride, const StencilWeights<W>& w,
+                             const Momentum& momentum) {
+  for (int b = 0; b < W; ++b, band_row += row_stride) {
+    double* gn = band_row;
+    for (int a = 0; a < W; ++a, gn += 5)
+      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, w.N(a, b), w.wx[a], w.wy[b]));
+  }
+}
+
+/// p2g of the force (Sulsky et al. 1994, eq. 16): m N g - V grad N . sigma into slots 3-4, with
+/// mg = (m gx, m gy) and the stress sxx, syy, sxy of volume V:
+///   fx += m gx N - V (dN/dx sxx + dN/dy sxy),  fy += m gy N - V (dN/dx sxy + dN/dy syy).
+template <int W>
+inline void scatter_forces(double* band_row, std::size_t row_stride, const StencilWeights<W>& w, Double2 mg, double V,
+                           double sxx, double syy, double sxy) {
+  const Double2 s_dx{sxx, sxy}, s_dy{sxy, syy};  // what dN/dx and dN/dy multiply, per component
+  for (int b = 0; b < W; ++b, band_row += row_stride) {
+    double* gn = band_row;
+    for (int a = 0; a < W; ++a, gn += 5) {
+      const double N = w.N(a, b);
+      const double dx = w.dwx[a] * w.wy[b], dy = w.wx[a] * w.dwy[b];
+      store2(gn + 3, load2(gn + 3) + (mg * N - V * (dx * s_dx + dy * s_dy)));
+    }
+  }
+}
+
+/// The velocity gradient of a nodal velocity field at the particle, sum_i v_i (x) grad N_i, as the
+/// column pairs of L = [[dvx/dx, dvx/dy], [dvy/dx, dvy/dy]]: d_dx = (dvx/dx, dvy/dx), d_dy = (dvx/dy, dvy/dy).
+struct VelocityGradient {
+  Double2 d_dx = splat2(0.0), d_dy = splat2(0.0);
+  void add(Double2 v, double dx, double dy) {
+    d_dx += dx * v;
+    d_dy += dy * v;
+  }
+  /// The strain increment (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx) (CB-Geo compute_strain_rate).
+  void strain_increment(double dt, double* de) const {
+    de[0] = dt * d_dx[0];
+    de[1] = dt * d_dy[1];
+    de[2] = dt * (d_dy[0] + d_dx[1]);
+  }
+};
+
+/// The velocity gradient of `field` (2 values per node, nodes `row_nodes` apart per row) at the particle
+/// whose stencil starts at node `first`; `stride` values per node (2 for velocity_, 4 for updated_).
+template <int W>
+inline VelocityGradient gather_velocity_gradient(const double* field, std::size_t stride, std::size_t first,
+                                                 std::size_t row_nodes, const StencilWeights<W>& w) {
+  VelocityGradient L;
+  for (int b = 0; b < W; ++b, first += row_nodes) {
+    const double* v = field + stride * first;
+    for (int a = 0; a < W; ++a, v += stride) L.add(load2(v), w.dwx[a] * w.wy[b], w.wx[a] * w.dwy[b]);
+  }
+  return L;
+}
+
+/// What g2p sums over the stencil of the updated nodal field (4 values per node: v_new x, y, then the
+/// FLIP rate a x, y): v = sum N v_i; FLIP: a = sum N a_i; APIC: B = sum N v_i (x_i - x_p)^T as its
+/// columns b_dx = (Bxx, Byx), b_dy = (Bxy, Byy) (Jiang et al. 2015); with `gradient` (USL) also the
+/// velocity gradient of v_new at the particle.
+struct GridSums {
+  Double2 v = splat2(0.0), a = splat2(0.0);
+  Double2 b_dx = splat2(0.0), b_dy = splat2(0.0);
+  VelocityGradient L;
+};
+
+/// `dxs`, `dys`: APIC only, node minus particle per stencil column / row (m).
+template <int W, bool Affine>
+inline GridSums gather_updated(const double* updated, std::size_t first, std::size_t row_nodes,
+                               const StencilWeights<W>& w, const double* dxs, const double* dys, bool gradient) {
+  GridSums s;
+  for (int b = 0; b < W; ++b, first += row_nodes) {
+    const double* u = updated + 4 * first;
+    for (int a = 0; a < W; ++a, u += 4) {
+      const double N = w.N(a, b);
+      const Double2 v = load2(u);
+      const Double2 Nv = N * v;
+      s.v += Nv;
+      if constexpr (Affine) {
+        s.b_dx += Nv * dxs[a];
+        s.b_dy += Nv * dys[b];
+      } else {
+        s.a += N * load2(u + 2);
+      }
+      if (gradient) s.L.add(v, w.dwx[a] * w.wy[b], w.wx[a] * w.dwy[b]);
+    }
+  }
+  return s;
+}
+
+}  // namespace mpm::core
