@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace bridge {
@@ -25,12 +26,32 @@ inline Vec2 map_point(const QuadNodes& x, double xi, double eta) {
   return n[0] * x[0] + n[1] * x[1] + n[2] * x[2] + n[3] * x[3];
 }
 
+/// The columns of J = dx/dxi of the bilinear map at (xi, eta): (dx/dxi, dx/deta).
+inline std::pair<Vec2, Vec2> map_derivatives(const QuadNodes& x, double xi, double eta) {
+  return {0.25 * ((1 - eta) * (x[1] - x[0]) + (1 + eta) * (x[2] - x[3])),
+          0.25 * ((1 - xi) * (x[3] - x[0]) + (1 + xi) * (x[2] - x[1]))};
+}
+
 /// det(dx/dxi) of the bilinear map at (xi, eta); linear in xi and eta, so its minimum over the
 /// element is at a corner.
 inline double jacobian_determinant(const QuadNodes& x, double xi, double eta) {
-  const Vec2 dxi = 0.25 * ((1 - eta) * (x[1] - x[0]) + (1 + eta) * (x[2] - x[3]));
-  const Vec2 deta = 0.25 * ((1 - xi) * (x[3] - x[0]) + (1 + xi) * (x[2] - x[1]));
+  const auto [dxi, deta] = map_derivatives(x, xi, eta);
   return dxi.x() * deta.y() - dxi.y() * deta.x();
+}
+
+/// The shape-function gradients dN_a/dx (a = 0..3) of the bilinear map at (xi, eta): J^-T dN_a/dxi, with
+/// J = dx/dxi (Zienkiewicz et al. 2013, eq. 6.12). The element must not be degenerate there (det J != 0).
+inline std::array<Vec2, 4> shape_function_gradients(const QuadNodes& x, double xi, double eta) {
+  const auto [dxi, deta] = map_derivatives(x, xi, eta);
+  const double det = dxi.x() * deta.y() - dxi.y() * deta.x();
+  constexpr double xi_a[4] = {-1, 1, 1, -1}, eta_a[4] = {-1, -1, 1, 1};
+  std::array<Vec2, 4> g;
+  for (int a = 0; a < 4; ++a) {
+    const double n_xi = 0.25 * xi_a[a] * (1 + eta_a[a] * eta), n_eta = 0.25 * eta_a[a] * (1 + xi_a[a] * xi);
+    // J^-T (n_xi, n_eta) with J = [dxi deta] (columns)
+    g[a] = Vec2(deta.y() * n_xi - dxi.y() * n_eta, -deta.x() * n_xi + dxi.x() * n_eta) / det;
+  }
+  return g;
 }
 
 /// Smallest det J over the element (the minimum of the corner values).

@@ -20,3 +20,16 @@ function(geoflow_add_test)
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}
     DISCOVERY_TIMEOUT 60)
 endfunction()
+
+# geoflow_add_python_test(NAME <name> LABEL <label> SCRIPT <file.py> [TIMEOUT <s>] [ARGS <arg..>])
+# Registers a Python test run with Debian's /usr/bin/python3 (numpy, h5py, matplotlib); skipped when
+# that interpreter is missing.
+find_program(GEOFLOW_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
+function(geoflow_add_python_test)
+  cmake_parse_arguments(T "" "NAME;LABEL;SCRIPT;TIMEOUT" "ARGS" ${ARGN})
+  if(NOT GEOFLOW_PYTHON3)
+    return()
+  endif()
+  add_test(NAME ${T_NAME} COMMAND ${GEOFLOW_PYTHON3} ${T_SCRIPT} ${T_ARGS})
+  set_tests_properties(${T_NAME} PROPERTIES LABELS ${T_LABEL} TIMEOUT ${T_TIMEOUT})
+endfunction()

@@ -76,6 +76,25 @@ inline void affine_axis_weights(LinearShape, const double* /*w*/, const double* 
   for (int k = 0; k < LinearShape::kWidth; ++k) a[k] = dw[k];
 }
 
+/// One axis's entry of APIC's D_p / h^2 = sum_a w_a (s_a - s)^2 for a particle at lattice coordinate s
+/// (units of h; uGIMP half-size l in units of h; `max_cell` the last cell of the axis), evaluated afresh
+/// (p2g computes it from the stored weights: affine_axis_weights). Bilinear: t (1 - t), t the position
+/// in the cell LinearShape::eval picks.
+inline double apic_inertia(LinearShape, double s, double /*l*/, int max_cell) {
+  int base = 0;
+  double w[2], dw[2];
+  LinearShape::eval(s, 0.0, max_cell, base, w, dw);
+  return w[0] * w[1];
+}
+inline double apic_inertia(GimpShape, double s, double l, int max_cell) {
+  int base = 0;
+  double w[GimpShape::kWidth], dw[GimpShape::kWidth];
+  GimpShape::eval(s, l, max_cell, base, w, dw);
+  double D = 0.0;
+  for (int a = 0; a < GimpShape::kWidth; ++a) D += w[a] * (base + a - s) * (base + a - s);
+  return D;
+}
+
 /// g2p's new APIC matrix B_p of one particle, as read at lattice coordinates (sx, sy) (units of h from
 /// the lattice origin; `max_cell_*` the last cell per axis) with D_p at that position, from the two
 /// stencil sums at x^n: B = sum_i N v_i (x_i - x_p^n)^T and C = sum_i v_i grad w_ip^T (xx xy yx yy).
@@ -96,13 +115,8 @@ inline void affine_matrix_at(GimpShape, const double* B, const double* /*C*/, do
 ///   tests/verification/mpm/apic_transfer_test.cpp).
 inline void affine_matrix_at(LinearShape, const double* /*B*/, const double* C, double sx, double sy, int max_cell_x,
                              int max_cell_y, double hx, double hy, double* out) {
-  const auto inertia = [](double s, int max_cell) {  // D_p / h^2 = t (1 - t), the cell LinearShape::eval picks
-    int base = 0;
-    double w[2], dw[2];
-    LinearShape::eval(s, 0.0, max_cell, base, w, dw);
-    return w[0] * w[1];
-  };
-  const double Dxx = inertia(sx, max_cell_x) * hx * hx, Dyy = inertia(sy, max_cell_y) * hy * hy;
+  const double Dxx = apic_inertia(LinearShape{}, sx, 0.0, max_cell_x) * hx * hx;
+  const double Dyy = apic_inertia(LinearShape{}, sy, 0.0, max_cell_y) * hy * hy;
   out[0] = C[0] * Dxx;
   out[1] = C[1] * Dyy;
   out[2] = C[2] * Dxx;
