@@ -666,6 +666,7 @@ template <class Model>
 struct SameMaterial {
   const Model& model;
   void operator()(std::uint32_t /*material*/, double* s, const double* de, double* sv) const { model.update(s, de, sv); }
+  bool separated(std::uint32_t /*material*/, double mass, double volume) const { return model.separated(mass, volume); }
 };
 /// Dispatch for mixed materials: a switch on the material type (no virtual call).
 struct MixedMaterials {
@@ -676,6 +677,10 @@ struct MixedMaterials {
       m.mohr_coulomb.update(s, de, sv);
     else
       m.elastic.update(s, de, sv);
+  }
+  bool separated(std::uint32_t material, double mass, double volume) const {
+    const Material& m = materials[material];
+    return m.type == io::MaterialType::MohrCoulomb2D && m.mohr_coulomb.separated(mass, volume);
   }
 };
 }  // namespace
@@ -826,8 +831,8 @@ void Engine::update_material_state(std::size_t c) {
 }
 
 /// The material's stress update with the (possibly smoothed) increment, volume *= 1 + de_v (CB-Geo
-/// update_volume, here with the particle's own increment), the strain sums, and the particle fields
-/// carried unchanged, all into the next buffer.
+/// update_volume, here with the particle's own increment), no stress once separated (materials.hpp),
+/// the strain sums, and the particle fields carried unchanged, all into the next buffer.
 template <class Dispatch>
 void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch) {
   for (std::size_t k = k0; k < k1; ++k) {
@@ -840,6 +845,7 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     dispatch(cur_.material[p], s, de, sv);
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
+    if (dispatch.separated(cur_.material[p], cur_.mass[p], nxt_.volume[k])) std::fill_n(s, 4, 0.0);
     nxt_.epsv[k] = cur_.epsv[p] + dv;
     nxt_.exx[k] = cur_.exx[p] + de[0];
     nxt_.eyy[k] = cur_.eyy[p] + de[1];

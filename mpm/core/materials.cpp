@@ -28,6 +28,7 @@ MohrCoulomb MohrCoulomb::from(const io::MaterialSpec& spec) {
   m.pdstrain_residual = spec.residual_pdstrain;
   m.tension_cutoff = spec.tension_cutoff;
   m.softening = spec.softening;
+  m.separation_density = spec.separation_volume_ratio > 0 ? spec.density / spec.separation_volume_ratio : 0.0;
   m.peak_surface = constitutive::MohrCoulombSurface({m.phi_peak, m.psi_peak, m.c_peak, m.tension_cutoff});
   m.residual_surface =
       constitutive::MohrCoulombSurface({m.phi_residual, m.psi_residual, m.c_residual, m.tension_cutoff});

@@ -22,6 +22,8 @@ struct LinearElastic {
   static constexpr std::size_t kStateCount = 0;
   static LinearElastic from(const io::MaterialSpec& spec);
   void initial_state(double* /*svars*/) const {}
+  /// An elastic solid never separates (see MohrCoulomb::separated).
+  static constexpr bool separated(double /*mass*/, double /*volume*/) { return false; }
   void update(double* stress, const double* dstrain, double* /*svars*/) const {
     const double a1 = bulk + 4.0 / 3.0 * shear, a2 = bulk - 2.0 / 3.0 * shear;
     stress[0] += a1 * dstrain[0] + a2 * dstrain[1];
@@ -46,6 +48,8 @@ struct MohrCoulomb {
   double pdstrain_peak = 0, pdstrain_residual = 0;
   double tension_cutoff = 0;
   bool softening = false;
+  /// density / separation_volume_ratio, kg/m3 (0: never separates); see separated().
+  double separation_density = 0;
   /// The peak and residual strengths with their sin / cos evaluated once (from()); update() uses them
   /// when the particle's (phi, psi) equal one of them, and evaluates its own only inside the
   /// softening range (or for other angles read from a resume file).
@@ -57,6 +61,14 @@ struct MohrCoulomb {
   static MohrCoulomb from(const io::MaterialSpec& spec);
   void initial_state(double* svars) const;
   void update(double* stress, const double* dstrain, double* svars) const;
+  /// Stress-free separation (an extension; CB-Geo has none): a particle whose density mass / volume has
+  /// fallen below separation_density is disconnected grains and carries no stress, the "disconnected"
+  /// regime of Dunatunga & Kamrin (2015, J. Fluid Mech. 779, 483-513, section 2.2: sigma = 0 below the
+  /// critical density). Without it a particle torn off at the apex of the yield surface keeps dilating
+  /// with its neighbours' motion (V grew 100-2000x on the paper's column) and its nodal force V sigma grad N
+  /// with it, until nearly empty cells run away. The engine zeroes the stress after the update; a particle
+  /// that is compacted again reloads from zero stress.
+  bool separated(double mass, double volume) const { return mass < separation_density * volume; }
   /// CB-Geo's invariant state variables of `stress` (svars[3..5]: epsilon, rho, theta). They depend on
   /// the stress only, so the engine computes them when it writes the state (snapshot), not every step.
   static void set_invariants(const double* stress, double* svars);

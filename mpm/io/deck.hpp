@@ -47,6 +47,10 @@ struct FrictionConstraint {
 
 enum class MaterialType { LinearElastic2D, MohrCoulomb2D };
 
+/// A Mohr-Coulomb particle whose volume has grown past 3 times its initial one (porosity 0.4 -> 0.8) is
+/// taken as disconnected grains: no soil skeleton carries stress that loose (mpm/core/materials.hpp).
+inline constexpr double kDefaultSeparationVolumeRatio = 3.0;
+
 /// CB-Geo material parameters (angles converted to radians by the reader).
 struct MaterialSpec {
   unsigned id = 0;
@@ -58,6 +62,8 @@ struct MaterialSpec {
   double peak_pdstrain = 0, residual_pdstrain = 0;
   double tension_cutoff = 0;
   bool softening = false;
+  /// Extension: stress-free separation beyond this volume ratio V / V0 (V0 = mass / density); 0 = never.
+  double separation_volume_ratio = kDefaultSeparationVolumeRatio;
 };
 
 struct Analysis {

@@ -104,6 +104,9 @@ MaterialSpec read_material(StrictObject& m) {
     spec.residual_pdstrain = m.number_in("residual_pdstrain", kPdstrainRange);
     spec.tension_cutoff = m.number_in("tension_cutoff", kTensionCutoffRange);
     spec.softening = m.boolean("softening");
+    spec.separation_volume_ratio = m.number_or("separation_volume_ratio", kDefaultSeparationVolumeRatio);
+    if (const auto p = separation_volume_ratio_problem(spec.separation_volume_ratio); !p.empty())
+      m.fail("separation_volume_ratio", p);
     if (const auto p = dilation_problem(spec.dilation / deg, spec.friction / deg); !p.empty()) m.fail("dilation", p);
     if (spec.softening && !(spec.residual_pdstrain > spec.peak_pdstrain))
       m.fail("residual_pdstrain", "must be > peak_pdstrain when softening is true");

@@ -28,6 +28,9 @@ inline const common::NumberRange kTimeStepRange = common::NumberRange::positive(
 /// Gravity components and prescribed velocities: any finite number.
 inline const common::NumberRange kFiniteRange = common::NumberRange::any();
 
+/// "" when `ratio` is a usable separation_volume_ratio (0 = never, or a number > 1), else what is wrong.
+std::string separation_volume_ratio_problem(double ratio);
+
 /// "" when dilation <= friction (Mohr-Coulomb's flow rule: psi <= phi), else what is wrong.
 std::string dilation_problem(double dilation_deg, double friction_deg);
 

@@ -166,6 +166,7 @@ TEST(DeckReader, ParticleStressesVolumesAndMaterialSets) {
   EXPECT_EQ(deck.particles[0].material_id, 0u);
   ASSERT_EQ(deck.materials.size(), 2u);
   EXPECT_CLOSE(deck.materials[1].friction, M_PI / 6, 1e-15, 0);  // degrees -> radians
+  EXPECT_EQ(deck.materials[1].separation_volume_ratio, mpm::io::kDefaultSeparationVolumeRatio);  // absent
 }
 
 TEST(DeckReader, ReadsTheCbGeoGimpColumnDeck) {
@@ -272,6 +273,26 @@ TEST(DeckReaderErrors, MissingMohrCoulombParameter) {
           "dilation": 0, "cohesion": 10, "residual_friction": 30, "residual_dilation": 0, "residual_cohesion": 10,
           "peak_pdstrain": 0, "residual_pdstrain": 0, "softening": false})");
   EXPECT_MESSAGE_HAS(d.error(), "materials[0].tension_cutoff: missing");
+}
+
+TEST(DeckReaderErrors, SeparationVolumeRatio) {
+  const json mc = json::parse(
+      R"({"id": 0, "type": "MohrCoulomb2D", "density": 2000, "youngs_modulus": 1e7, "poisson_ratio": 0.3, "friction": 30,
+          "dilation": 0, "cohesion": 10, "residual_friction": 30, "residual_dilation": 0, "residual_cohesion": 10,
+          "peak_pdstrain": 0, "residual_pdstrain": 0, "tension_cutoff": 5, "softening": false})");
+  for (const double ok : {0.0, 1.5, 10.0}) {
+    SmallDeck d("separation_ok");
+    d.deck["materials"][0] = mc;
+    d.deck["materials"][0]["separation_volume_ratio"] = ok;
+    EXPECT_EQ(d.read().materials[0].separation_volume_ratio, ok);
+  }
+  SmallDeck d("separation");
+  d.deck["materials"][0] = mc;
+  d.deck["materials"][0]["separation_volume_ratio"] = 0.9;
+  EXPECT_MESSAGE_HAS(d.error(), "materials[0].separation_volume_ratio: expected 0 (never separate) or a volume ratio > 1, got 0.9");
+  SmallDeck e("separation_elastic");
+  e.deck["materials"][0]["separation_volume_ratio"] = 3;  // a LinearElastic2D material never separates
+  EXPECT_MESSAGE_HAS(e.error(), "materials[0].separation_volume_ratio: unsupported key");
 }
 
 TEST(DeckReaderErrors, NonPositiveDtAndNsteps) {
