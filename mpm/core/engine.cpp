@@ -72,8 +72,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   damping_ = an.cundall_damping;
   if (!(damping_ >= 0.0 && damping_ < 1.0))
     throw common::InputError("analysis.damping.damping_factor", "expected a number in [0, 1), got " + num(damping_));
-  gx_ = an.gravity.x();
-  gy_ = an.gravity.y();
+  body_force_ = BodyForce{an.gravity, deck.base_acceleration};
   smoothing_ = parse_stress_smoothing(an.stress_smoothing);
   step_index_ = deck.first_step;
   threads_ = threads > 0 ? threads : omp_get_max_threads();
@@ -338,6 +337,9 @@ void Engine::sort_particles() {
 // ---------------------------------------------------------------------------------------------------
 void Engine::step() {
   for (std::size_t c = 0; c < chunks_; ++c) problems_[c] = Problem{};
+  const Vec2 b = body_force_.at(time());
+  gx_ = b.x();
+  gy_ = b.y();
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
 #pragma omp parallel num_threads(threads_)
   {

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "mpm/core/body_force.hpp"
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/stress_remedy.hpp"
@@ -182,7 +183,8 @@ class Engine {
   VelocityTransfer transfer_;  ///< FLIP, PIC, blend or APIC (velocity_transfer.hpp)
   bool locate_ = true;
   double damping_ = 0.0;
-  double gx_ = 0, gy_ = 0;
+  BodyForce body_force_;   ///< gravity and the shaken base's inertial force (body_force.hpp)
+  double gx_ = 0, gy_ = 0;  ///< body_force_ at the start of the current step
   StressSmoothing smoothing_ = StressSmoothing::None;
   double dt_ = 0;
   long long step_index_ = 0;

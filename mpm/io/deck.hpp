@@ -5,9 +5,11 @@
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "mpm/io/math_functions.hpp"
 #include "mpm/io/particle_table.hpp"
 
 namespace mpm::io {
@@ -91,6 +93,17 @@ struct Output {
   std::vector<std::string> vtk_statevars;
 };
 
+/// Extension (external_loading_conditions.base_acceleration): the grid's base, walls and whole frame
+/// move with a ground acceleration a_g(t) = acceleration * f(t) along axis `dir` (f a math function), and
+/// the run is made in that moving frame: every particle feels the inertial body force -m a_g(t) besides
+/// gravity (d'Alembert; OpenSees' UniformExcitation, whose responses are relative to the ground).
+struct BaseAcceleration {
+  int dir = 0;
+  double acceleration = 0;  ///< m/s2, the scale of f
+  LinearFunction history;
+  double at(double t) const { return acceleration * history.value(t); }
+};
+
 struct Deck {
   std::filesystem::path working_dir;  ///< the -f folder
   Grid grid;
@@ -104,6 +117,7 @@ struct Deck {
   /// all zero (a fresh start, or a resume file without the dataset).
   std::vector<std::array<double, 4>> particle_affine;
   Analysis analysis;
+  std::optional<BaseAcceleration> base_acceleration;
   Output output;
   bool resumed = false;         ///< particles came from a resume file
   long long first_step = 0;     ///< the first loop step to run (resume step + 1 when resumed)

@@ -410,6 +410,22 @@ void check_no_duplicates(const std::vector<ParticleRecord>& ps, const std::strin
                                           num(keyed[k].first.first) + ", " + num(keyed[k].first.second) + ")");
 }
 
+/// external_loading_conditions.base_acceleration: {"dir": 0 or 1, "acceleration": m/s2, "math_function_id"}.
+BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned, LinearFunction>& functions) {
+  BaseAcceleration out;
+  const long long dir = b.integer("dir");
+  if (dir != 0 && dir != 1) b.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
+  out.dir = static_cast<int>(dir);
+  out.acceleration = b.number_in("acceleration", kFiniteRange);
+  const long long id = b.integer("math_function_id");
+  const auto f = id >= 0 ? functions.find(static_cast<unsigned>(id)) : functions.end();
+  if (f == functions.end())
+    b.fail("math_function_id", "no math function with id " + std::to_string(id) + " in math_functions");
+  out.history = f->second;
+  b.finish();
+  return out;
+}
+
 /// Sorts deck.particles by id, and deck.particle_affine (when given) with them.
 void sort_by_id(Deck& deck) {
   std::vector<std::size_t> order(deck.particles.size());
@@ -447,18 +463,19 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   }
   deck.materials = read_materials(root);
 
-  // math_functions: nothing this program reads can use one, so any definition is an error.
-  if (const json* mf = root.optional("math_functions"))
-    if (!(mf->is_array() && mf->empty()))
-      root.fail("math_functions", "unsupported (no key read by this program takes a math_function_id); remove it or give []");
+  const auto math_functions = read_math_functions(root);
 
-  // external loads: gravity only.
+  // external loads: gravity and (extension) a base acceleration.
   if (const json* loads = root.optional("external_loading_conditions")) {
     StrictObject l(*loads, shown, "external_loading_conditions");
     const json& g = l.required("gravity");
     if (!g.is_array() || g.size() != 2 || !g[0].is_number() || !g[1].is_number())
       l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
     deck.analysis.gravity = Eigen::Vector2d(g[0].get<double>(), g[1].get<double>());
+    if (l.has("base_acceleration")) {
+      StrictObject b = l.object("base_acceleration");
+      deck.base_acceleration = read_base_acceleration(b, math_functions);
+    }
     l.finish();
   }
 

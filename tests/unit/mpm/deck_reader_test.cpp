@@ -374,8 +374,8 @@ TEST(DeckReaderErrors, UndefinedNodeSetAndMathFunctionsAndVtk) {
   d.deck["mesh"]["boundary_conditions"]["velocity_constraints"][0]["nset_id"] = 9;
   EXPECT_MESSAGE_HAS(d.error(), "velocity_constraints[0].nset_id: node set 9 is not defined");
   SmallDeck m("math");
-  m.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Linear", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
-  EXPECT_MESSAGE_HAS(m.error(), "mpm.json: math_functions: unsupported");
+  m.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Sin", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
+  EXPECT_MESSAGE_HAS(m.error(), "mpm.json: math_functions[0].type: unsupported math function \"Sin\" (expected Linear)");
   SmallDeck v("vtk");
   v.deck["post_processing"]["vtk"] = json::parse(R"(["stresses", "pressure"])");
   EXPECT_MESSAGE_HAS(v.error(), "post_processing.vtk: unknown attribute pressure (expected displacements, velocities");
@@ -519,4 +519,51 @@ TEST(DeckReader, ConstraintFilesAndParticleCells) {
   node.write("vc.txt", "20 1 0.0\n");
   node.deck["mesh"]["boundary_conditions"] = json::parse(R"({"velocity_constraints": [{"file": "vc.txt"}]})");
   EXPECT_MESSAGE_HAS(node.error(), "vc.txt: entry 0: node id 20 is not a node of the mesh");
+}
+
+TEST(DeckReader, MathFunctionsAndBaseAcceleration) {
+  SmallDeck d("base_acceleration");
+  d.deck["math_functions"] = json::parse(
+      R"([{"id": 3, "type": "Linear", "xvalues": [0, 1, 2], "fxvalues": [0, 2, -1]},
+          {"id": 4, "type": "Linear", "xvalues": [0], "fxvalues": [7]}])");
+  d.deck["external_loading_conditions"]["base_acceleration"] =
+      json::parse(R"({"dir": 0, "acceleration": 9.81, "math_function_id": 3})");
+  const auto deck = d.read();
+  ASSERT_TRUE(deck.base_acceleration.has_value());
+  const auto& b = *deck.base_acceleration;
+  EXPECT_EQ(b.dir, 0);
+  // CB-Geo's Linear function: linear between the points, held at the end values outside them.
+  EXPECT_EQ(b.history.value(-1.0), 0.0);
+  EXPECT_EQ(b.history.value(0.5), 1.0);
+  EXPECT_EQ(b.history.value(1.0), 2.0);
+  EXPECT_EQ(b.history.value(1.5), 0.5);
+  EXPECT_EQ(b.history.value(5.0), -1.0);
+  EXPECT_CLOSE(b.at(0.25), 9.81 * 0.5, 1e-15, 0);
+}
+
+TEST(DeckReaderErrors, MathFunctionsAndBaseAcceleration) {
+  const auto with = [](const std::string& name, const char* functions, const char* base) {
+    SmallDeck d(name);
+    d.deck["math_functions"] = json::parse(functions);
+    if (base != nullptr) d.deck["external_loading_conditions"]["base_acceleration"] = json::parse(base);
+    return d.error();
+  };
+  const char* ok = R"([{"id": 0, "type": "Linear", "xvalues": [0, 1], "fxvalues": [0, 1]}])";
+  EXPECT_MESSAGE_HAS(with("mf_sizes", R"([{"id": 0, "type": "Linear", "xvalues": [0, 1], "fxvalues": [0]}])", nullptr),
+                     "math_functions[0].fxvalues: expected as many values as xvalues (2), got 1");
+  EXPECT_MESSAGE_HAS(with("mf_order", R"([{"id": 0, "type": "Linear", "xvalues": [0, 1, 1], "fxvalues": [0, 1, 2]}])", nullptr),
+                     "math_functions[0].xvalues: expected strictly increasing values, got 1 then 1 (entries 1 and 2)");
+  EXPECT_MESSAGE_HAS(with("mf_text", R"([{"id": 0, "type": "Linear", "xvalues": [0, "a"], "fxvalues": [0, 1]}])", nullptr),
+                     "math_functions[0].xvalues: entry 1: expected a finite number, got the string \"a\"");
+  EXPECT_MESSAGE_HAS(with("mf_dup", R"([{"id": 0, "type": "Linear", "xvalues": [0], "fxvalues": [0]},
+                                        {"id": 0, "type": "Linear", "xvalues": [0], "fxvalues": [1]}])", nullptr),
+                     "math_functions[1].id: duplicate math function id 0");
+  EXPECT_MESSAGE_HAS(with("mf_key", R"([{"id": 0, "type": "Linear", "xvalues": [0], "fxvalues": [0], "yvalues": [0]}])", nullptr),
+                     "math_functions[0].yvalues: unsupported key");
+  EXPECT_MESSAGE_HAS(with("ba_id", ok, R"({"dir": 0, "acceleration": 1, "math_function_id": 5})"),
+                     "external_loading_conditions.base_acceleration.math_function_id: no math function with id 5 in math_functions");
+  EXPECT_MESSAGE_HAS(with("ba_dir", ok, R"({"dir": 2, "acceleration": 1, "math_function_id": 0})"),
+                     "external_loading_conditions.base_acceleration.dir: expected 0 (x) or 1 (y), got 2");
+  EXPECT_MESSAGE_HAS(with("ba_missing", ok, R"({"dir": 0, "math_function_id": 0})"),
+                     "external_loading_conditions.base_acceleration.acceleration: missing");
 }
