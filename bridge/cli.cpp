@@ -46,6 +46,11 @@ struct CliOptions {
   bool ignore_supports = false;
   std::vector<double> extent;
   DeckOptions deck;
+  /// --ground-motion FILE with -dt, -factor, -dir (OpenSees Path -dt -filePath -factor, UniformExcitation dir).
+  std::string ground_motion;
+  std::optional<double> ground_motion_dt;
+  double ground_motion_factor = 1.0;
+  int ground_motion_dir = 1;
   bool quiet = false;
   bool plane_stress = false;
 };
@@ -159,6 +164,13 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (o.base) deck.base = parse_base(*o.base);
   if (!o.extent.empty()) deck.extent = std::array<double, 4>{o.extent[0], o.extent[1], o.extent[2], o.extent[3]};
   if (const auto problem = mpm::io::run_name_problem(deck.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
+  if (o.ground_motion.empty() && (o.ground_motion_dt || o.ground_motion_factor != 1.0 || o.ground_motion_dir != 1))
+    throw common::InputError("--ground-motion", "the record file is missing (--ground-motion-dt, -factor and -dir describe it)");
+  if (!o.ground_motion.empty()) {
+    if (!o.ground_motion_dt) throw common::InputError("--ground-motion-dt", "required with --ground-motion (the record's time step, s)");
+    deck.ground_motion = read_ground_motion(o.ground_motion, *o.ground_motion_dt, o.ground_motion_factor,
+                                            o.ground_motion_dir, "--ground-motion");
+  }
 
   using Clock = std::chrono::steady_clock;
   auto lap = [last = Clock::now()]() mutable {
@@ -349,6 +361,14 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
       ->check(CLI::IsMember({"apic", "flip", "pic"}))->capture_default_str()->group("MPM deck");
   app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC): the same as --transfer pic")->group("MPM deck");
   app.add_option("--damping", o.deck.damping, "Cundall damping factor")->capture_default_str()->group("MPM deck");
+  app.add_option("--ground-motion", o.ground_motion,
+                 "keep shaking the MPM run after a transfer during an earthquake: the acceleration record of the FEM "
+                 "script's UniformExcitation (an OpenSees Path -filePath file: numbers, any per line), cut at the transfer "
+                 "time and written as the deck's base_acceleration (the MPM run in the ground's frame, as UniformExcitation's "
+                 "relative responses)")->group("Ground motion");
+  app.add_option("--ground-motion-dt", o.ground_motion_dt, "time step of the record, s (Path -dt; required with --ground-motion)")->group("Ground motion");
+  app.add_option("--ground-motion-factor", o.ground_motion_factor, "factor on the record (Path -factor, e.g. 9.81 for a record in g)")->capture_default_str()->group("Ground motion");
+  app.add_option("--ground-motion-dir", o.ground_motion_dir, "direction (UniformExcitation dir): 1 = x, 2 = y")->capture_default_str()->group("Ground motion");
   app.add_flag("--quiet", o.quiet, "print nothing on success (the report is still written to report.json)");
   app.footer("Exit status: 0 done; 2 bad input (one line naming the option, file, line or key; nothing written); "
              "1 an output could not be written (disk full, permissions); an output target that exists and is not a regular "

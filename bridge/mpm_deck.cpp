@@ -212,6 +212,14 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   common::checked_number(options.damping, mpm::io::kDampingFactorRange, "--damping");
   if (const auto problem = mpm::io::run_name_problem(options.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
+  if (options.ground_motion) {
+    // The transferred state is the MPM state at t = (step + 1) dt (a resumed run's clock).
+    d.base_motion = motion_after(*options.ground_motion, state.time, static_cast<double>(options.step + 1) * d.dt);
+    if (d.base_motion.t.empty())
+      d.warnings.push_back("the ground motion ends at " +
+                           num(static_cast<double>(options.ground_motion->values.size() - 1) * options.ground_motion->dt) +
+                           " s, by the transfer time " + num(state.time) + " s: the deck has no base_acceleration");
+  }
   return d;
 }
 
@@ -327,6 +335,12 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   for (const auto& m : state.materials) mats.push_back(material_json(m));
   deck["materials"] = mats;
   deck["external_loading_conditions"] = {{"gravity", {0.0, -state.gravity}}};
+  if (!d.base_motion.t.empty()) {
+    deck["math_functions"] = ordered_json::array(
+        {{{"id", 0}, {"type", "Linear"}, {"xvalues", d.base_motion.t}, {"fxvalues", d.base_motion.a}}});
+    deck["external_loading_conditions"]["base_acceleration"] = {
+        {"dir", options.ground_motion->dof - 1}, {"acceleration", 1.0}, {"math_function_id", 0}};
+  }
   ordered_json analysis;
   analysis["type"] = "MPMExplicit2D";
   analysis["mpm_scheme"] = options.scheme;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bridge/ground_motion.hpp"
 #include "bridge/transfer_state.hpp"
 #include "mpm/io/particle_table.hpp"
 
@@ -52,6 +53,8 @@ struct DeckOptions {
   /// docs/study/transfer_comparison.md), "flip" or "pic".
   std::string transfer = "apic";
   double damping = 0;                         ///< Cundall damping factor
+  /// The record that goes on shaking the base after the transfer (ground_motion.hpp); unset: none.
+  std::optional<GroundMotion> ground_motion;
 };
 
 /// The background grid: cells cover [x0, x0 + nx h] x [y0, y0 + ny h]; GIMP adds one node ring.
@@ -77,6 +80,8 @@ struct DeckText {
   /// The particle coordinate files of the deck's generators (name, body): particles.txt for one
   /// material, particles_material<id>.txt per material for several.
   std::vector<std::pair<std::string, std::string>> particle_files;
+  /// The ground motion after the transfer, in MPM time (empty: the deck has no base_acceleration).
+  MotionTable base_motion;
 };
 
 /// Chooses the grid (throws common::InputError naming the option when a particle lies outside the
