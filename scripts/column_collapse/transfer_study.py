@@ -88,7 +88,7 @@ def main(argv=None):
     os.makedirs(args.out, exist_ok=True)
     jobs = []
     for a in [float(x) for x in args.aspect.split(",")]:
-        for key in args.transfers.split(","):
+        for key in [k for k in args.transfers.split(",") if k]:
             jobs.append((a, key, 1.0))
         for key in [k for k in args.halved.split(",") if k]:
             jobs.append((a, key, 0.5))
