@@ -10,6 +10,7 @@
 #include "bridge/boundary_extraction.hpp"
 #include "bridge/deck_boundaries.hpp"
 #include "bridge/fem_model.hpp"
+#include "support/bridge_states.hpp"
 #include "support/input_error_message.hpp"
 #include "support/tolerance.hpp"
 
@@ -204,24 +205,11 @@ TEST(BoundaryExtraction, MalformedConstraintsNameFileLineAndKey) {
 
 /// The transfer state of `m` at rest (1 m SSPquads, elastic).
 bridge::TransferState state_of(const bridge::FemModel& model) {
-  bridge::TransferState st;
-  for (const auto& n : model.nodes) st.reference.push_back(n.crd);
-  st.displacement.assign(st.reference.size(), bridge::Vec2::Zero());
-  st.velocity.assign(st.reference.size(), bridge::Vec2::Zero());
-  for (const auto& fe : model.elements) {
-    bridge::TransferElement e;
-    e.nodes = fe.nodes;
-    e.density = 2000;
-    st.elements.push_back(e);
-  }
-  bridge::MpmMaterial mat;
-  mat.density = 2000;
-  mat.youngs_modulus = 1e7;
-  mat.poisson_ratio = 0.3;
-  st.materials = {mat};
-  st.index_gauss_points();
-  st.gauss_stress.assign(st.elements.size(), bridge::Stress6{});
-  return st;
+  std::vector<bridge::Vec2> nodes;
+  for (const auto& n : model.nodes) nodes.push_back(n.crd);
+  std::vector<std::array<int, 4>> quads;
+  for (const auto& fe : model.elements) quads.push_back(fe.nodes);
+  return test_support::resting_state(nodes, quads, 2000, 1e7, 0.3);
 }
 
 // Walls 5.2 m apart and elements of 1.3 m2 (default cell sqrt(1.3) = 1.14 m, 4.56 cells): the cell size

@@ -11,6 +11,7 @@
 #include "bridge/mpm_deck.hpp"
 #include "common/input_error.hpp"
 #include "mpm/io/math_functions.hpp"
+#include "support/bridge_states.hpp"
 #include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
@@ -41,21 +42,8 @@ TEST(GroundMotion, CutAtTheTransferInMpmTime) {
 }
 
 TEST(GroundMotion, TheDeckShakesOnFromTheTransfer) {
-  bridge::TransferState st;
-  st.reference = {{0, 0}, {10, 0}, {10, 8}, {0, 8}};
-  st.displacement.assign(4, bridge::Vec2::Zero());
-  st.velocity.assign(4, bridge::Vec2::Zero());
-  bridge::TransferElement e;
-  e.nodes = {0, 1, 2, 3};
-  e.density = 1800;
-  st.elements = {e};
-  bridge::MpmMaterial mat;
-  mat.density = 1800;
-  mat.youngs_modulus = 50e6;
-  mat.poisson_ratio = 0.3;
-  st.materials = {mat};
-  st.index_gauss_points();
-  st.gauss_stress.assign(1, bridge::Stress6{});
+  bridge::TransferState st =
+      test_support::resting_state({{0, 0}, {10, 0}, {10, 8}, {0, 8}}, {{0, 1, 2, 3}}, 1800, 50e6, 0.3);
   st.time = 0.12;
   bridge::DeckOptions o;
   o.dt = 1e-3;

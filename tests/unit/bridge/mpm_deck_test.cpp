@@ -10,6 +10,7 @@
 
 #include "bridge/mpm_deck.hpp"
 #include "common/input_error.hpp"
+#include "support/bridge_states.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -17,25 +18,13 @@ namespace {
 const std::filesystem::path kDeck = std::filesystem::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/cbgeo/mc_column_gimp_short";
 
 bridge::TransferState column_state() {
-  bridge::TransferState st;
-  st.reference = {{0, 0}, {10, 0}, {10, 8}, {0, 8}};
-  st.displacement.assign(4, bridge::Vec2::Zero());
-  st.velocity.assign(4, bridge::Vec2::Zero());
-  bridge::TransferElement e;
-  e.nodes = {0, 1, 2, 3};
-  e.density = 1800;
-  st.elements = {e};
-  bridge::MpmMaterial m;
+  bridge::TransferState st =
+      test_support::resting_state({{0, 0}, {10, 0}, {10, 8}, {0, 8}}, {{0, 1, 2, 3}}, 1800, 50e6, 0.3);
+  bridge::MpmMaterial& m = st.materials[0];
   m.type = bridge::MpmMaterial::Type::MohrCoulomb2D;
-  m.density = 1800;
-  m.youngs_modulus = 50e6;
-  m.poisson_ratio = 0.3;
   m.friction = 30 * M_PI / 180;
   m.cohesion = 500;
   m.tension_cutoff = 300;
-  st.materials = {m};
-  st.index_gauss_points();
-  st.gauss_stress.assign(1, bridge::Stress6{});
   return st;
 }
 
