@@ -88,7 +88,9 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     p.update(dU);
     p.form_unbalance();
     ++iterations;
-    const TestResult result = test.test(dU, p.unbalance());
+    // OpenSees' tests read the system's solution x, which for KrylovNewton is the plain solve r = A0^-1 R of
+    // this iteration, not the accelerated increment dU applied (KrylovNewton::solveCurrentStep).
+    const TestResult result = test.test(r, p.unbalance());
     if (result != TestResult::Continue) return result == TestResult::Converged;
     if (k >= m) {  // restart the subspace with a fresh tangent (one solve, on the fresh tangent only)
       k = 0;

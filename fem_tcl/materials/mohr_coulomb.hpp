@@ -77,6 +77,9 @@ class MohrCoulomb final : public NDMaterial, public ReducibleStrength {
   MohrCoulombParameters params_;
   constitutive::IsotropicElasticity elasticity_{};
   constitutive::MohrCoulombStrength strength_{};
+  /// The return for elasticity_ and strength_ with its constants formed once (sines, planes, candidate
+  /// solves); bit for bit constitutive::mohr_coulomb_return. Copies of a material share it.
+  constitutive::MohrCoulombReturnMap return_map_;
   int stage_ = 0;
   double strength_factor_ = 1.0;  ///< strength reduction factor F in force (1: the defined strength)
 
