@@ -108,7 +108,7 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     if (k == 0) ws.least_squares.clear();
     ws.least_squares.add_column(ws.w[k]);
     ++k;
-    if (!ws.least_squares.solve(r_new, ws.c)) {  // rank deficient W: the minimum-norm-like pivoted solution
+    if (!ws.least_squares.solve(r_new, ws.c)) {  // W rank deficient to round-off: the pivoted QR's basic solution
       for (int j = 0; j < k; ++j) ws.W.col(j) = ws.w[j];
       ws.c = ws.W.leftCols(k).colPivHouseholderQr().solve(r_new);
     }
