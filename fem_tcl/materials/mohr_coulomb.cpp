@@ -40,6 +40,7 @@ void MohrCoulomb::update_constants() {
   strength_ = {phi, psi, params_.cohesion / f,
                params_.tension ? *params_.tension / f : std::numeric_limits<double>::infinity()};
   return_map_ = constitutive::MohrCoulombReturnMap(elasticity_, constitutive::MohrCoulombSurface(strength_));
+  elastic_tangent_ = form_elastic_tangent();
 }
 
 void MohrCoulomb::set_strength_reduction(double factor) {
@@ -51,7 +52,7 @@ void MohrCoulomb::set_strength_reduction(double factor) {
   update_constants();
 }
 
-Matrix3 MohrCoulomb::elastic_tangent() const {
+Matrix3 MohrCoulomb::form_elastic_tangent() const {
   const double g = elasticity_.shear_modulus;
   const double lambda = elasticity_.bulk_modulus - 2.0 * g / 3.0;
   Matrix3 d;
