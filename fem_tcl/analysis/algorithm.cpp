@@ -1,6 +1,7 @@
 #include "fem_tcl/analysis/algorithm.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 
 namespace fem::analysis {
@@ -49,6 +50,7 @@ void AlgorithmWorkspace::resize(int n, int krylov_dim) {
   d.assign(krylov_dim, Eigen::VectorXd::Zero(n));
   w.assign(krylov_dim, Eigen::VectorXd::Zero(n));
   W.setZero(n, krylov_dim);
+  least_squares.reset(n, std::min(krylov_dim, std::max(n, 1)));
 }
 
 namespace {
@@ -74,7 +76,7 @@ bool newton(StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws, int& 
 /// and take d_k = r_k + sum_j c_j (d_j - w_j).
 bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws,
                    int& iterations) {
-  const int m = config.krylov_max_dim;
+  const int m = std::min(config.krylov_max_dim, p.equations());  // as OpenSees: at most numEqns
   Eigen::VectorXd& r = ws.r;
   Eigen::VectorXd& r_new = ws.r_new;
   Eigen::VectorXd& dU = ws.dU;
@@ -88,7 +90,9 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     p.update(dU);
     p.form_unbalance();
     ++iterations;
-    const TestResult result = test.test(dU, p.unbalance());
+    // OpenSees' tests read the system's solution x, which for KrylovNewton is the plain solve r = A0^-1 R of
+    // this iteration, not the accelerated increment dU applied (KrylovNewton::solveCurrentStep).
+    const TestResult result = test.test(r, p.unbalance());
     if (result != TestResult::Continue) return result == TestResult::Converged;
     if (k >= m) {  // restart the subspace with a fresh tangent (one solve, on the fresh tangent only)
       k = 0;
@@ -101,11 +105,15 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     p.solve(p.unbalance(), r_new);
     ws.d[k] = dU;
     ws.w[k] = r - r_new;
+    if (k == 0) ws.least_squares.clear();
+    ws.least_squares.add_column(ws.w[k]);
     ++k;
-    for (int j = 0; j < k; ++j) ws.W.col(j) = ws.w[j];
-    const Eigen::VectorXd c = ws.W.leftCols(k).colPivHouseholderQr().solve(r_new);
+    if (!ws.least_squares.solve(r_new, ws.c)) {  // W rank deficient to round-off: the pivoted QR's basic solution
+      for (int j = 0; j < k; ++j) ws.W.col(j) = ws.w[j];
+      ws.c = ws.W.leftCols(k).colPivHouseholderQr().solve(r_new);
+    }
     dU = r_new;
-    for (int j = 0; j < k; ++j) dU += c[j] * (ws.d[j] - ws.w[j]);
+    for (int j = 0; j < k; ++j) dU += ws.c[j] * (ws.d[j] - ws.w[j]);
     r = r_new;
   }
 }

@@ -9,6 +9,7 @@
 
 #include "common/command_args.hpp"
 #include "fem_tcl/analysis/convergence_test.hpp"
+#include "fem_tcl/analysis/householder_least_squares.hpp"
 
 namespace fem::analysis {
 
@@ -48,7 +49,9 @@ AlgorithmConfig parse_algorithm(common::CommandArgs& args);
 struct AlgorithmWorkspace {
   Eigen::VectorXd dU, step, r, r_new;
   std::vector<Eigen::VectorXd> d, w;  ///< Krylov subspace: increments and residual changes
-  Eigen::MatrixXd W;
+  Eigen::MatrixXd W;                  ///< the w as columns, for a rank-deficient least squares only
+  HouseholderLeastSquares least_squares;  ///< QR of [w_0 .. w_k-1], grown by a column per iteration
+  Eigen::VectorXd c;
   void resize(int n, int krylov_dim);
 };
 

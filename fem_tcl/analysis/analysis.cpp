@@ -150,6 +150,7 @@ void Analysis::setup() {
   U_.setZero(ndof); Ud_.setZero(ndof); Udd_.setZero(ndof);
   Ut_.setZero(ndof); Utd_.setZero(ndof); Utm1_.setZero(ndof);
   have_previous_ = false;
+  forces_current_ = false;
   version_ = domain_.version();
 }
 
@@ -232,28 +233,11 @@ void Analysis::form_unbalance() {
   }
   Vector8 f;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
-    domain::Element& el = *elements_[e];
-    f.noalias() = el.resisting_force();
-    if (dynamic) {
-      const Vector8& m = el.lumped_mass();
-      Vector8 a = Vector8::Zero(), v;
-      for (int i = 0; i < el.num_nodes(); ++i) {
-        a[2 * i] = el.nodes()[i]->accel[0];
-        a[2 * i + 1] = el.nodes()[i]->accel[1];
-      }
-      f += m.cwiseProduct(a);
-      const domain::RayleighFactors& rf = el.rayleigh();
-      if (rf.any()) {
-        v = el.trial_velocity();
-        if (rf.alpha_m != 0.0) f += rf.alpha_m * m.cwiseProduct(v);
-        if (rf.beta_k != 0.0) f.noalias() += rf.beta_k * (el.tangent_stiffness() * v);
-        if (rf.beta_k0 != 0.0) f.noalias() += rf.beta_k0 * (el.initial_stiffness() * v);
-        if (rf.beta_kc != 0.0) f.noalias() += rf.beta_kc * (el.committed_tangent() * v);
-      }
-    }
+    if (!forces_current_) element_unbalance(*elements_[e], f);
+    const Vector8& fe = forces_current_ ? element_force_[e] : f;
     const auto& ids = element_eq_[e];
     for (int i = 0; i < 8; ++i) {
-      if (ids[i] >= 0) R_[ids[i]] -= f[i];
+      if (ids[i] >= 0) R_[ids[i]] -= fe[i];
     }
   }
   if (config_.handler == HandlerType::Penalty) {
@@ -267,10 +251,42 @@ void Analysis::form_unbalance() {
   }
 }
 
+void Analysis::element_unbalance(domain::Element& el, Vector8& f) const {
+  f.noalias() = el.resisting_force();
+  if (!config_.transient) return;
+  const Vector8& m = el.lumped_mass();
+  Vector8 a = Vector8::Zero(), v;
+  for (int i = 0; i < el.num_nodes(); ++i) {
+    a[2 * i] = el.nodes()[i]->accel[0];
+    a[2 * i + 1] = el.nodes()[i]->accel[1];
+  }
+  f += m.cwiseProduct(a);
+  const domain::RayleighFactors& rf = el.rayleigh();
+  if (rf.any()) {
+    v = el.trial_velocity();
+    if (rf.alpha_m != 0.0) f += rf.alpha_m * m.cwiseProduct(v);
+    if (rf.beta_k != 0.0) f.noalias() += rf.beta_k * (el.tangent_stiffness() * v);
+    if (rf.beta_k0 != 0.0) f.noalias() += rf.beta_k0 * (el.initial_stiffness() * v);
+    if (rf.beta_kc != 0.0) f.noalias() += rf.beta_kc * (el.committed_tangent() * v);
+  }
+}
+
 void Analysis::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) { solver_->solve(rhs, x); }
 
 void Analysis::update_elements() {
-  for (domain::Element* e : elements_) e->update();
+  // Transient: the unbalance contribution of each element right after its update, while its nodes and
+  // material are in cache; form_unbalance sums them in the same order (the same sums bit for bit).
+  forces_current_ = false;
+  if (!config_.transient) {
+    for (domain::Element* e : elements_) e->update();
+    return;
+  }
+  element_force_.resize(elements_.size());
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    elements_[e]->update();
+    element_unbalance(*elements_[e], element_force_[e]);
+  }
+  forces_current_ = true;
 }
 
 double Analysis::prescribed_value(const Prescribed& p) const {
@@ -464,6 +480,7 @@ int Analysis::analyze(int steps, double dt) {
     int iterations = 0;
     try {
       setup();
+      forces_current_ = false;  // the domain may have changed since the last step (Tcl commands, a revert)
       new_step(dt);
       if (!solve_step(config_.algorithm, *this, test_, workspace_, iterations)) {
         std::cerr << "WARNING " << (config_.transient ? "DirectIntegrationAnalysis" : "StaticAnalysis")

@@ -66,8 +66,11 @@ class Analysis final : public StepProblem {
   void apply_increment(const Eigen::VectorXd& full);  // full-dof increment through the integrator
   void commit_step(double dt);
   void impose_prescribed();
-  /// Trial strains of every element from the nodes' trial displacements (vector loop, no map walk).
+  /// Trial strains of every element from the nodes' trial displacements (vector loop, no map walk); in a
+  /// transient analysis each element's unbalance contribution is formed in the same pass (element_force_).
   void update_elements();
+  /// Element e's contribution to the unbalance: f_int + M a (+ the Rayleigh damping forces) when transient.
+  void element_unbalance(domain::Element& el, domain::Vector8& f) const;
 
   domain::Domain& domain_;
   AnalysisConfig config_;
@@ -89,6 +92,10 @@ class Analysis final : public StepProblem {
   int neq_ = 0;
 
   Eigen::VectorXd R_;
+  /// Per element, element_unbalance at the state of the last update_elements (one pass over the elements
+  /// per iteration instead of two); valid while forces_current_.
+  std::vector<domain::Vector8> element_force_;
+  bool forces_current_ = false;
   Eigen::VectorXd full_;  ///< full-dof work vector
   Eigen::VectorXd dx_;
   // Newmark / HHT / central-difference state (full dofs)

@@ -23,9 +23,25 @@ bool solver_kind_for(std::string_view name, SolverKind& kind) {
   return false;
 }
 
+namespace {
+/// Eigen's CHOLMOD wrapper with its factor reachable, for cholmod_solve2 (reused workspace, see solve).
+struct Cholmod : Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> {
+  cholmod_factor* factor() { return m_cholmodFactor; }
+};
+}  // namespace
+
 struct LinearSolver::Impl {
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu;
-  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
+  Cholmod llt;
+  // cholmod_solve2's solution and workspace, allocated by the first solve and reused (CHOLMOD resizes them)
+  cholmod_dense* x = nullptr;
+  cholmod_dense* y = nullptr;
+  cholmod_dense* e = nullptr;
+  ~Impl() {
+    cholmod_free_dense(&x, &llt.cholmod());
+    cholmod_free_dense(&y, &llt.cholmod());
+    cholmod_free_dense(&e, &llt.cholmod());
+  }
 };
 
 LinearSolver::LinearSolver(SolverKind kind) : kind_(kind), impl_(std::make_unique<Impl>()) {
@@ -117,8 +133,24 @@ void LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     x.resize(0);
     return;
   }
-  if (use_cholesky_) x = impl_->llt.solve(b);
-  else x = impl_->lu.solve(b);
+  if (use_cholesky_) {
+    // cholmod_solve2 as Eigen's solve calls it through cholmod_solve (the same arithmetic), without
+    // allocating the solution and workspace at every solve.
+    cholmod_dense rhs{};
+    rhs.nrow = rhs.nzmax = rhs.d = static_cast<std::size_t>(b.size());
+    rhs.ncol = 1;
+    rhs.x = const_cast<double*>(b.data());
+    rhs.xtype = CHOLMOD_REAL;
+    rhs.dtype = CHOLMOD_DOUBLE;
+    if (!cholmod_solve2(CHOLMOD_A, impl_->llt.factor(), &rhs, nullptr, &impl_->x, nullptr, &impl_->y, &impl_->e,
+                        &impl_->llt.cholmod())) {
+      throw common::NumericalError("CHOLMOD could not solve the linear system");
+    }
+    x.resize(b.size());
+    std::memcpy(x.data(), impl_->x->x, static_cast<std::size_t>(b.size()) * sizeof(double));
+  } else {
+    x = impl_->lu.solve(b);
+  }
   if (!x.allFinite()) throw common::NumericalError("the solution of the linear system is not finite (singular system)");
 }
 

@@ -79,9 +79,19 @@ LoadPattern* Domain::find_pattern(int tag) {
   return it == patterns_.end() ? nullptr : it->second.get();
 }
 
+void Domain::refresh_lists() const {
+  if (list_version_ == version_) return;
+  node_list_.clear();
+  element_list_.clear();
+  for (const auto& [tag, n] : nodes_) node_list_.push_back(n.get());
+  for (const auto& [tag, e] : elements_) element_list_.push_back(e.get());
+  list_version_ = version_;
+}
+
 void Domain::apply_loads(double time) {
-  for (auto& [tag, n] : nodes_) n->load.setZero();
-  for (auto& [tag, e] : elements_) e->zero_load();
+  refresh_lists();
+  for (Node* n : node_list_) n->load.setZero();
+  for (Element* e : element_list_) e->zero_load();
   ground_accel_.setZero();
   for (auto& [tag, p] : patterns_) p->apply(*this, time);
 }
@@ -95,8 +105,9 @@ void Domain::update_elements() {
 }
 
 void Domain::commit() {
-  for (auto& [tag, n] : nodes_) n->commit();
-  for (auto& [tag, e] : elements_) e->commit_state();
+  refresh_lists();
+  for (Node* n : node_list_) n->commit();
+  for (Element* e : element_list_) e->commit_state();
   committed_time_ = time_;
   if (trial_commits_) return;
   check_mesh_quality();
@@ -106,7 +117,9 @@ void Domain::commit() {
 MeshQuality Domain::mesh_quality() const {
   MeshQuality q;
   bool first = true;
-  for (const auto& [tag, e] : elements_) {
+  refresh_lists();
+  for (const Element* e : element_list_) {
+    const int tag = e->tag();
     if (!e->is_continuum()) continue;  // zero-length springs have no area
     const double d = e->min_corner_jacobian();
     const double r = e->min_corner_jacobian_ratio();

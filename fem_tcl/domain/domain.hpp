@@ -112,6 +112,13 @@ class Domain {
   bool warned_inverted_ = false;
   bool trial_commits_ = false;
   void check_mesh_quality();
+  /// The nodes and elements in tag order as plain vectors, for the loops of every step (apply_loads,
+  /// commit, mesh_quality) without walking the maps; rebuilt when version_ moved (every change of the maps
+  /// moves it).
+  void refresh_lists() const;
+  mutable std::vector<Node*> node_list_;
+  mutable std::vector<Element*> element_list_;
+  mutable long list_version_ = -1;
 };
 
 }  // namespace fem::domain

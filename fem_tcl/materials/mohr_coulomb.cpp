@@ -39,6 +39,8 @@ void MohrCoulomb::update_constants() {
   const double psi = f == 1.0 ? params_.dilation_deg * kDegree : std::atan(std::tan(params_.dilation_deg * kDegree) / f);
   strength_ = {phi, psi, params_.cohesion / f,
                params_.tension ? *params_.tension / f : std::numeric_limits<double>::infinity()};
+  return_map_ = constitutive::MohrCoulombReturnMap(elasticity_, constitutive::MohrCoulombSurface(strength_));
+  elastic_tangent_ = form_elastic_tangent();
 }
 
 void MohrCoulomb::set_strength_reduction(double factor) {
@@ -50,7 +52,7 @@ void MohrCoulomb::set_strength_reduction(double factor) {
   update_constants();
 }
 
-Matrix3 MohrCoulomb::elastic_tangent() const {
+Matrix3 MohrCoulomb::form_elastic_tangent() const {
   const double g = elasticity_.shear_modulus;
   const double lambda = elasticity_.bulk_modulus - 2.0 * g / 3.0;
   Matrix3 d;
@@ -63,6 +65,8 @@ std::unique_ptr<NDMaterial> MohrCoulomb::copy_for(PlaneType plane) const {
     throw common::InputError("nDMaterial MohrCoulomb " + std::to_string(tag()), "only PlaneStrain elements are supported");
   auto copy = std::make_unique<MohrCoulomb>(tag(), params_);
   copy->stage_ = stage_;
+  // the same constants: share the return's data (one copy in cache for every element of this material)
+  if (copy->strength_factor_ == strength_factor_) copy->return_map_ = return_map_;
   return copy;
 }
 
@@ -77,7 +81,7 @@ void MohrCoulomb::set_trial_strain(const Vector3& strain) {
     tangent_ = elastic_tangent();
     tangent_stale_ = false;
   } else {
-    const constitutive::MohrCoulombUpdate up = constitutive::mohr_coulomb_return(trial, elasticity_, strength_);
+    const constitutive::MohrCoulombUpdate up = return_map_.apply(trial);
     trial_stress4_ = up.stress;
     trial_plastic_ = committed_plastic_ + up.plastic_strain_increment;
     region_ = up.region;

@@ -70,13 +70,19 @@ class MohrCoulomb final : public NDMaterial, public ReducibleStrength {
   const Eigen::Vector4d& stress_plane_strain() const { return trial_stress4_; }
 
  private:
-  Matrix3 elastic_tangent() const;
+  /// Plane-strain elastic D, formed with the constants (read at every elastic update and assembly).
+  const Matrix3& elastic_tangent() const { return elastic_tangent_; }
+  Matrix3 form_elastic_tangent() const;
   void update_constants();
   void validate() const;
 
   MohrCoulombParameters params_;
   constitutive::IsotropicElasticity elasticity_{};
   constitutive::MohrCoulombStrength strength_{};
+  /// The return for elasticity_ and strength_ with its constants formed once (sines, planes, candidate
+  /// solves); bit for bit constitutive::mohr_coulomb_return. Copies of a material share it.
+  constitutive::MohrCoulombReturnMap return_map_;
+  Matrix3 elastic_tangent_ = Matrix3::Zero();
   int stage_ = 0;
   double strength_factor_ = 1.0;  ///< strength reduction factor F in force (1: the defined strength)
 

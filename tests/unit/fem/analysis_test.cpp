@@ -1,11 +1,12 @@
 // Unit tests: the linear solver (UMFPACK / CHOLMOD, singular systems, factorization reuse), time series,
-// convergence tests and the parsers of the analysis chain.
+// convergence tests, the growing least squares of KrylovNewton and the parsers of the analysis chain.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 
 #include "common/input_error.hpp"
 #include "fem_tcl/analysis/convergence_test.hpp"
+#include "fem_tcl/analysis/householder_least_squares.hpp"
 #include "fem_tcl/analysis/integrator.hpp"
 #include "fem_tcl/analysis/linear_solver.hpp"
 #include "fem_tcl/domain/time_series.hpp"
@@ -25,6 +26,42 @@ Eigen::SparseMatrix<double> tridiagonal(int n, double diag, double off) {
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(t.begin(), t.end());
   return A;
+}
+
+// KrylovNewton's least squares, grown a column at a time, against a QR of the whole matrix (Eigen's
+// column-pivoting Householder QR): the same minimizer at each size, to round-off; and a dependent column
+// reported as rank deficient instead of a meaningless solution.
+TEST(HouseholderLeastSquares, GrowsToTheLeastSquaresSolutionOfTheWholeMatrix) {
+  const int n = 40, m = 6;
+  std::srand(7);
+  const Eigen::MatrixXd W = Eigen::MatrixXd::Random(n, m);
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+  fem::analysis::HouseholderLeastSquares ls;
+  ls.reset(n, m);
+  Eigen::VectorXd c;
+  for (int k = 1; k <= m; ++k) {
+    ls.add_column(W.col(k - 1));
+    ASSERT_EQ(ls.columns(), k);
+    ASSERT_TRUE(ls.solve(b, c));
+    const Eigen::VectorXd expected = W.leftCols(k).colPivHouseholderQr().solve(b);
+    ASSERT_EQ(c.size(), k);
+    for (int j = 0; j < k; ++j) EXPECT_CLOSE(c[j], expected[j], 1e-13, 1e-12) << "k = " << k << ", j = " << j;
+    // the residual is orthogonal to the columns (normal equations)
+    EXPECT_LT((W.leftCols(k).transpose() * (b - W.leftCols(k) * c)).norm(), 1e-12);
+  }
+  ls.clear();
+  EXPECT_EQ(ls.columns(), 0);
+  ls.add_column(W.col(0));
+  ls.add_column(2.0 * W.col(0));  // dependent: R(1, 1) = 0 up to round-off
+  EXPECT_FALSE(ls.solve(b, c));
+  ls.clear();
+  ls.add_column(W.col(0));
+  ls.add_column(Eigen::VectorXd::Zero(n));  // exactly zero
+  EXPECT_FALSE(ls.solve(b, c));
+  ls.clear();
+  ls.add_column(W.col(0));
+  ls.add_column(1e-6 * W.col(1) + W.col(0));  // nearly parallel to the first, a real part of its own
+  EXPECT_TRUE(ls.solve(b, c));
 }
 
 TEST(LinearSolver, BothKindsSolveAndReuseTheFactorization) {
