@@ -113,6 +113,10 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
       << fmt(d.grid.h) << " m from (" << fmt(d.grid.x0) << ", " << fmt(d.grid.y0) << "); dt " << fmt(d.dt)
       << " s, nsteps " << d.nsteps << ", output every " << d.output_steps << " steps\n";
   for (const auto& b : boundaries) out << "  boundary: " << boundary_text(b, d) << "\n";
+  if (!d.base_motion.t.empty())
+    out << "  ground motion: " << o.ground_motion << " from FEM t = " << fmt(a.state.time, 9) << " s as base_acceleration (dir "
+        << o.ground_motion_dir << "), " << d.base_motion.t.size() << " points to MPM t = " << fmt(d.base_motion.t.back(), 6)
+        << " s\n";
   out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, ";
   for (const auto& f : d.particle_files) out << f.first << ", ";
   out << "report.json in " << outdir.string() << "\n";
@@ -261,6 +265,9 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     rj["notes"] = assembled.notes;
     rj["warnings"] = warnings;
     rj["boundaries"] = boundaries_json(boundaries, d);
+    if (!d.base_motion.t.empty())
+      rj["ground_motion"] = {{"file", o.ground_motion}, {"dir", o.ground_motion_dir}, {"points", d.base_motion.t.size()},
+                             {"mpm_time", {d.base_motion.t.front(), d.base_motion.t.back()}}};
     auto text = [&](const char* name, const std::string& body) {
       files.push_back(std::make_unique<common::AtomicTextFile>(outdir / name));
       files.back()->stream() << body;

@@ -478,6 +478,11 @@ TEST(Fem2mpmRegression, ATransferDuringShakingKeepsShakingTheMpmRun) {
                              deck.string() + shaking,
                          dir);
     EXPECT_EQ(r.code, 0) << r.err;
+    const auto report = nlohmann::json::parse(slurp(deck / "report.json"));
+    EXPECT_EQ(report.contains("ground_motion"), !shaking.empty());
+    if (!shaking.empty()) {
+      EXPECT_EQ(report["ground_motion"]["points"], 72);  // 0.3 s, samples 0.31..1.0, the closing 0
+    }
     EXPECT_EQ(std::system((mpm.string() + " -f " + deck.string() + "/ -i mpm.json > " + (deck / "mpm.txt").string() + " 2>&1").c_str()), 0)
         << slurp(deck / "mpm.txt");
     double sum = 0;
