@@ -9,16 +9,19 @@
 #include <string>
 #include <vector>
 
+#include "fem_tcl/domain/time_series_path.hpp"
+
 namespace bridge {
 
-/// A record as OpenSees' Path series with -dt reads it: value k at t = k dt (k from 0), times factor;
-/// 0 past the last value (no -useLast).
+/// A record as OpenSees' `timeSeries Path -dt DT -filePath FILE -factor F` reads it (fem::domain::PathSeries:
+/// value k at t = k dt from k = 0, linear between samples, 0 from the last sample's time on: no -useLast),
+/// and the UniformExcitation direction it drives.
 struct GroundMotion {
-  int dof = 1;              ///< UniformExcitation's direction: 1 = x, 2 = y
-  double dt = 0, factor = 1;
-  std::vector<double> values;
-  /// OpenSees' Path value at t (linear between samples, 0 before 0 and after the last sample), times factor.
-  double at(double t) const;
+  GroundMotion(int dof, double dt, double factor, std::vector<double> values)
+      : dof(dof), record(0, std::move(values), dt, factor, false, 0.0) {}
+  int dof;  ///< 1 = x, 2 = y
+  fem::domain::PathSeries record;
+  double at(double t) const { return record.factor(t); }
 };
 
 /// Reads `file` (whitespace-separated numbers, any number per line, as OpenSees' -filePath). Throws

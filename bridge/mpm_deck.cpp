@@ -217,7 +217,7 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
     d.base_motion = motion_after(*options.ground_motion, state.time, static_cast<double>(options.step + 1) * d.dt);
     if (d.base_motion.t.empty())
       d.warnings.push_back("the ground motion ends at " +
-                           num(static_cast<double>(options.ground_motion->values.size() - 1) * options.ground_motion->dt) +
+                           num(options.ground_motion->record.end_time()) +
                            " s, by the transfer time " + num(state.time) + " s: the deck has no base_acceleration");
   }
   return d;

@@ -1,9 +1,11 @@
 #include "fem_tcl/domain/time_series_path.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <sstream>
+
+#include "common/input_error.hpp"
+#include "common/number_file.hpp"
 
 namespace fem::domain {
 
@@ -72,26 +74,16 @@ double PathTimeSeries::factor(double t) const {
   return c_ * (v1 + (v2 - v1) * (t - t1) / (t2 - t1));
 }
 
-std::vector<double> read_number_file(common::CommandArgs& args, const std::string& path) {
-  std::ifstream in(path);
-  if (!in) args.fail("cannot open file '" + path + "'");
-  std::vector<double> out;
-  std::string line;
-  for (int line_no = 1; std::getline(in, line); ++line_no) {
-    std::istringstream words(line);
-    std::string token;
-    while (words >> token) {
-      const auto v = common::CommandArgs::parse_number(token);
-      if (!v || !std::isfinite(*v)) {
-        args.fail("file '" + path + "' line " + std::to_string(line_no) + ": expected numbers, got '" + token + "'");
-      }
-      out.push_back(*v);
-    }
-  }
-  return out;
-}
-
 namespace {
+
+/// common::read_number_file, its error as this command's.
+std::vector<double> read_number_file(common::CommandArgs& args, const std::string& path) {
+  try {
+    return common::read_number_file(path);
+  } catch (const common::InputError& e) {
+    args.fail(e.what());
+  }
+}
 
 /// `-values {list}` or `-values v1 v2 ..` (OpenSees takes a Tcl list or the numbers that follow).
 std::vector<double> number_list(common::CommandArgs& args, std::string_view what) {

@@ -19,6 +19,10 @@ class PathSeries final : public TimeSeries {
   PathSeries(int tag, std::vector<double> values, double dt, double cfactor, bool use_last, double start_time);
   double factor(double t) const override;
   double end_time() const { return start_ + dt_ * static_cast<double>(values_.size() - 1); }
+  const std::vector<double>& values() const { return values_; }  ///< v_k, before the factor
+  double dt() const { return dt_; }
+  double cfactor() const { return c_; }
+  double start_time() const { return start_; }
 
  private:
   std::vector<double> values_;
@@ -49,8 +53,5 @@ class PathTimeSeries final : public TimeSeries {
 /// an unreadable file, a file with a non-numeric entry (file and line named), lists of different lengths,
 /// decreasing times or no usable choice of options; warns where OpenSees quietly ignores an option.
 std::shared_ptr<TimeSeries> parse_path_series(common::CommandArgs& args);
-
-/// The numbers of a text file, whitespace separated; throws naming the file and line of a non-numeric entry.
-std::vector<double> read_number_file(common::CommandArgs& args, const std::string& path);
 
 }  // namespace fem::domain

@@ -100,7 +100,7 @@ TEST(PathSeries, FilesWithDtTimesAndPairs) {
   EXPECT_CLOSE(series_at(interp, 3, 7.0), 10.0, 1e-12, 0.0);  // -useLast holds with -file
   const std::string bad = error_of(interp, "timeSeries Path 4 -dt 0.1 -filePath " + (dir / "bad.txt").string());
   EXPECT_NE(bad.find("timeSeries Path 4"), std::string::npos) << bad;
-  EXPECT_NE(bad.find("bad.txt' line 3: expected numbers, got 'abc'"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("bad.txt:3: expected a number, got 'abc'"), std::string::npos) << bad;
   EXPECT_NE(bad.find("usage: timeSeries"), std::string::npos) << bad;
   EXPECT_NE(error_of(interp, "timeSeries Path 5 -dt 0.1 -filePath " + (dir / "missing.txt").string()).find("cannot open"),
             std::string::npos);
