@@ -73,6 +73,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   if (!(damping_ >= 0.0 && damping_ < 1.0))
     throw common::InputError("analysis.damping.damping_factor", "expected a number in [0, 1), got " + num(damping_));
   body_force_ = BodyForce{an.gravity, deck.base_acceleration};
+  loads_ = ExternalLoads(deck, static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
   smoothing_ = parse_stress_smoothing(an.stress_smoothing);
   step_index_ = deck.first_step;
   threads_ = threads > 0 ? threads : omp_get_max_threads();
@@ -201,6 +202,11 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     } else if (mat.type == io::MaterialType::MohrCoulomb2D) {
       mat.mohr_coulomb.initial_state(sv);
     }
+  }
+  if (loads_.has_tractions()) {
+    cur_.traction_slot.resize(n);
+    nxt_.traction_slot.resize(n);
+    for (std::size_t p = 0; p < n; ++p) cur_.traction_slot[p] = loads_.traction_slot(cur_.id[p]);
   }
 
   // Scratch, sized once (no allocation per step).
@@ -340,6 +346,7 @@ void Engine::step() {
   const Vec2 b = body_force_.at(time());
   gx_ = b.x();
   gy_ = b.y();
+  loads_.set_time(time());
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
 #pragma omp parallel num_threads(threads_)
   {
@@ -492,7 +499,14 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
     if (forces) {
       const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
       const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
-      scatter_forces(band_row, row_stride, w, Double2{m * gx_, m * gy_}, V, sp[0], sp[1], sp[3]);
+      Double2 external{m * gx_, m * gy_};
+      if (!cur_.traction_slot.empty()) {
+        if (const std::int32_t slot = cur_.traction_slot[p]; slot >= 0) {
+          const Vec2 t = loads_.traction_force(slot, V, m / materials_[cur_.material[p]].density);
+          external += Double2{t.x(), t.y()};
+        }
+      }
+      scatter_forces(band_row, row_stride, w, external, V, sp[0], sp[1], sp[3]);
     }
   }
 }
@@ -541,7 +555,8 @@ void Engine::nodal_velocity_row(int j) {
   }
 }
 
-/// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m with Cundall's local damping
+/// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m, f with the concentrated nodal forces
+/// (external_loads.hpp), with Cundall's local damping
 /// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), v_new = v + a dt
 /// (a = g below the small-mass cutoff); at a constrained node the friction and velocity constraints in
 /// momentum form (nodal_constraints.hpp), and the rate (v_new - v_old) / dt handed to FLIP in place of a.
@@ -556,6 +571,11 @@ void Engine::integrate_row(int j) {
     }
     const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
     double fx = force_[2 * n], fy = force_[2 * n + 1];
+    if (loads_.has_nodal_forces()) {
+      const Vec2 f = loads_.nodal_force(n);
+      fx += f.x();
+      fy += f.y();
+    }
     if (damping_ > 0.0) apply_cundall_damping(damping_, fx, fy, vx, vy);
     // Below the small-mass cutoff only gravity accelerates the node (see small_mass_).
     const bool small = m < small_mass_;
@@ -859,6 +879,7 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     nxt_.nsize_y[k] = cur_.nsize_y[p];
     nxt_.lx[k] = cur_.lx[p];
     nxt_.ly[k] = cur_.ly[p];
+    if (!cur_.traction_slot.empty()) nxt_.traction_slot[k] = cur_.traction_slot[p];
     if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(c, k, ProblemKind::StressNotFinite, cur_.id[p], s[0], s[1]);
   }
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "mpm/core/body_force.hpp"
+#include "mpm/core/external_loads.hpp"
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/stress_remedy.hpp"
@@ -65,6 +66,8 @@ struct ParticleArrays {
   std::vector<double> svars;          ///< kStateVariables per particle
   std::vector<double> affine;         ///< 4 per particle: the APIC matrix B_p (Bxx, Bxy, Byx, Byy), m^2/s
   std::vector<std::int64_t> key;      ///< lattice cell index (x fastest), or kRemoved
+  /// Per particle: its slot in Engine::loads_ (external_loads.hpp), -1 no traction; empty without tractions.
+  std::vector<std::int32_t> traction_slot;
   void resize(std::size_t n);
 };
 
@@ -184,6 +187,7 @@ class Engine {
   bool locate_ = true;
   double damping_ = 0.0;
   BodyForce body_force_;   ///< gravity and the shaken base's inertial force (body_force.hpp)
+  ExternalLoads loads_;    ///< concentrated nodal forces and particle tractions (external_loads.hpp)
   double gx_ = 0, gy_ = 0;  ///< body_force_ at the start of the current step
   StressSmoothing smoothing_ = StressSmoothing::None;
   double dt_ = 0;

@@ -4,6 +4,7 @@
 // units, angles in radians, everything already validated by the reader (the core only asserts).
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -100,8 +101,27 @@ struct Output {
 struct BaseAcceleration {
   int dir = 0;
   double acceleration = 0;  ///< m/s2, the scale of f
-  LinearFunction history;
+  MathFunction history;
   double at(double t) const { return acceleration * history.value(t); }
+};
+
+/// CB-Geo concentrated_nodal_forces: a force `force` * f(t) (N per unit thickness) along `dir` at each
+/// node of `nodes`, added to the nodal external force every step (CB-Geo Node::apply_concentrated_force).
+struct NodalForce {
+  std::vector<int> nodes;  ///< lattice node indices
+  int dir = 0;
+  double force = 0;
+  MathFunction function;  ///< f = 1 without a math_function_id
+};
+
+/// CB-Geo particle_surface_traction: a traction `traction` * f(t) (Pa) along `dir` on each particle of a
+/// particle set, applied as the force traction * V / l0 (V the particle's volume, l0 = sqrt(V0) its side
+/// when it was made; CB-Geo Particle::assign_traction) mapped to the nodes with the shape functions.
+struct ParticleTraction {
+  std::vector<std::int64_t> particles;  ///< particle ids
+  int dir = 0;
+  double traction = 0;
+  MathFunction function;
 };
 
 struct Deck {
@@ -118,6 +138,8 @@ struct Deck {
   std::vector<std::array<double, 4>> particle_affine;
   Analysis analysis;
   std::optional<BaseAcceleration> base_acceleration;
+  std::vector<NodalForce> nodal_forces;
+  std::vector<ParticleTraction> particle_tractions;
   Output output;
   bool resumed = false;         ///< particles came from a resume file
   long long first_step = 0;     ///< the first loop step to run (resume step + 1 when resumed)

@@ -15,6 +15,7 @@
 #include "common/number_text.hpp"
 #include "mpm/io/ascii_files.hpp"
 #include "mpm/io/deck_rules.hpp"
+#include "mpm/io/external_loads.hpp"
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
 #include "mpm/io/output_keys.hpp"
@@ -201,40 +202,47 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
   a.finish();
 }
 
+/// The lattice nodes of an entry's nset_id: an entity set, -1 for every node (CB-Geo), or (extension) a
+/// generated grid's named set.
+std::vector<int> nodes_of_set(StrictObject& c, const Lattice& lattice, const EntitySets& sets,
+                              const std::map<std::string, std::vector<int>>& named) {
+  std::vector<int> nodes;
+  if (c.has("nset_id") && c.required("nset_id").is_string()) {  // extension: a generated grid's named set
+    const std::string name = c.string("nset_id");
+    const auto it = named.find(name);
+    if (it == named.end())
+      c.fail("nset_id", "no node set named \"" + name + "\"" +
+                            (named.empty() ? " (named sets exist only on a generated grid)"
+                                           : " (expected left, right, bottom, top or all)"));
+    return it->second;
+  }
+  const long long nset = c.integer("nset_id");
+  if (nset == -1) {  // CB-Geo: set -1 is every node
+    for (int k = 0; k < lattice.grid.nodes_x * lattice.grid.nodes_y; ++k) nodes.push_back(k);
+    return nodes;
+  }
+  const auto it = sets.nodes.find(nset);
+  if (it == sets.nodes.end()) c.fail("nset_id", "node set " + std::to_string(nset) + " is not defined in the entity sets");
+  for (long long id : it->second) nodes.push_back(lattice.node_index[id]);
+  return nodes;
+}
+
+/// The lattice index of a node id read from a file (`shown`, entry `line`).
+int file_node(const Lattice& lattice, const std::string& shown, double value, int line) {
+  const double r = std::round(value);
+  if (r != value || r < 0 || r >= static_cast<double>(lattice.node_index.size()))
+    throw common::InputError(shown, "entry " + std::to_string(line) + ": node id " + num(value) + " is not a node of the mesh");
+  return lattice.node_index[static_cast<std::size_t>(r)];
+}
+
 /// Constraint lists of mesh.boundary_conditions.
 void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const EntitySets& sets,
                               const std::map<std::string, std::vector<int>>& named, Deck& deck, const fs::path& dir) {
-  auto node_set = [&](StrictObject& c) {
-    std::vector<int> nodes;
-    if (c.has("nset_id") && c.required("nset_id").is_string()) {  // extension: a generated grid's named set
-      const std::string name = c.string("nset_id");
-      const auto it = named.find(name);
-      if (it == named.end())
-        c.fail("nset_id", "no node set named \"" + name + "\"" +
-                              (named.empty() ? " (named sets exist only on a generated grid)"
-                                             : " (expected left, right, bottom, top or all)"));
-      return it->second;
-    }
-    const long long nset = c.integer("nset_id");
-    if (nset == -1) {  // CB-Geo: set -1 is every node
-      for (int k = 0; k < deck.grid.nodes_x * deck.grid.nodes_y; ++k) nodes.push_back(k);
-      return nodes;
-    }
-    const auto it = sets.nodes.find(nset);
-    if (it == sets.nodes.end()) c.fail("nset_id", "node set " + std::to_string(nset) + " is not defined in the entity sets");
-    for (long long id : it->second) nodes.push_back(lattice.node_index[id]);
-    return nodes;
-  };
+  auto node_set = [&](StrictObject& c) { return nodes_of_set(c, lattice, sets, named); };
   auto direction = [](StrictObject& c) {
     const long long dir = c.integer("dir");
     if (dir != 0 && dir != 1) c.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
     return static_cast<int>(dir);
-  };
-  auto file_node = [&](const std::string& shown, double value, int line) {
-    const double r = std::round(value);
-    if (r != value || r < 0 || r >= static_cast<double>(lattice.node_index.size()))
-      throw common::InputError(shown, "entry " + std::to_string(line) + ": node id " + num(value) + " is not a node of the mesh");
-    return lattice.node_index[static_cast<std::size_t>(r)];
   };
   if (const json* list = bc.optional("velocity_constraints")) {
     if (!list->is_array()) bc.fail("velocity_constraints", "expected an array");
@@ -245,7 +253,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         const auto rows = read_columns(dir / f, f, 3);
         for (std::size_t r = 0; r < rows.size(); ++r) {
           VelocityConstraint vc;
-          vc.nodes = {file_node(f, rows[r][0], static_cast<int>(r))};
+          vc.nodes = {file_node(lattice, f, rows[r][0], static_cast<int>(r))};
           if (rows[r][1] != 0 && rows[r][1] != 1)
             throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
           vc.dir = static_cast<int>(rows[r][1]);
@@ -275,7 +283,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         const auto rows = read_columns(dir / f, f, 4);
         for (std::size_t r = 0; r < rows.size(); ++r) {
           FrictionConstraint fc;
-          fc.nodes = {file_node(f, rows[r][0], static_cast<int>(r))};
+          fc.nodes = {file_node(lattice, f, rows[r][0], static_cast<int>(r))};
           if (rows[r][1] != 0 && rows[r][1] != 1)
             throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
           fc.dir = static_cast<int>(rows[r][1]);
@@ -411,17 +419,13 @@ void check_no_duplicates(const std::vector<ParticleRecord>& ps, const std::strin
 }
 
 /// external_loading_conditions.base_acceleration: {"dir": 0 or 1, "acceleration": m/s2, "math_function_id"}.
-BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned, LinearFunction>& functions) {
+BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned, MathFunction>& functions) {
   BaseAcceleration out;
   const long long dir = b.integer("dir");
   if (dir != 0 && dir != 1) b.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
   out.dir = static_cast<int>(dir);
   out.acceleration = b.number_in("acceleration", kFiniteRange);
-  const long long id = b.integer("math_function_id");
-  const auto f = id >= 0 ? functions.find(static_cast<unsigned>(id)) : functions.end();
-  if (f == functions.end())
-    b.fail("math_function_id", "no math function with id " + std::to_string(id) + " in math_functions");
-  out.history = f->second;
+  out.history = math_function_of(b, functions);
   b.finish();
   return out;
 }
@@ -445,6 +449,49 @@ void sort_by_id(Deck& deck) {
 
 }  // namespace
 
+/// external_loading_conditions: gravity, CB-Geo's nodal forces and particle tractions (external_loads.hpp)
+/// and (extension) a base acceleration, with the math functions they name.
+void read_loads(StrictObject& root, Deck& deck, const Lattice& lattice, const EntitySets& sets,
+                const std::map<std::string, std::vector<int>>& named, const GeneratedParticles& gen, bool resumed,
+                const fs::path& dir) {
+  const auto math_functions = read_math_functions(root);
+  const json* loads = root.optional("external_loading_conditions");
+  if (loads == nullptr) return;
+  StrictObject l(*loads, root.file(), "external_loading_conditions");
+  const json& g = l.required("gravity");
+  if (!g.is_array() || g.size() != 2 || !g[0].is_number() || !g[1].is_number())
+    l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
+  deck.analysis.gravity = Eigen::Vector2d(g[0].get<double>(), g[1].get<double>());
+  if (l.has("base_acceleration")) {
+    StrictObject b = l.object("base_acceleration");
+    deck.base_acceleration = read_base_acceleration(b, math_functions);
+  }
+  LoadSets load_sets;
+  load_sets.nodes = [&](StrictObject& c) { return nodes_of_set(c, lattice, sets, named); };
+  load_sets.file_node = [&](const std::string& shown, double id, int entry) { return file_node(lattice, shown, id, entry); };
+  load_sets.particles = [&](StrictObject& c) {
+    const long long pset = c.integer("pset_id");
+    std::vector<std::int64_t> ids;
+    if (pset == -1) {  // CB-Geo: set -1 is every particle
+      for (const auto& p : deck.particles) ids.push_back(p.id);
+      return ids;
+    }
+    const std::vector<long long>* members = nullptr;
+    if (auto it = sets.particles.find(pset); it != sets.particles.end()) members = &it->second;
+    else if (auto jt = gen.psets.find(pset); jt != gen.psets.end()) members = &jt->second;
+    if (!members)
+      c.fail("pset_id", "particle set " + std::to_string(pset) + " is not defined" +
+                            (resumed ? " (on resume the particle_sets of the entity sets and of gauss generators are known, "
+                                       "not those of file generators)"
+                                     : ""));
+    ids.assign(members->begin(), members->end());
+    return ids;
+  };
+  deck.nodal_forces = read_nodal_forces(l, math_functions, load_sets, dir);
+  deck.particle_tractions = read_particle_tractions(l, math_functions, load_sets);
+  l.finish();
+}
+
 Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   const fs::path dir = working_dir;
   const std::string shown = input_file;
@@ -462,22 +509,6 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     read_analysis(a, deck, resume, uuid);
   }
   deck.materials = read_materials(root);
-
-  const auto math_functions = read_math_functions(root);
-
-  // external loads: gravity and (extension) a base acceleration.
-  if (const json* loads = root.optional("external_loading_conditions")) {
-    StrictObject l(*loads, shown, "external_loading_conditions");
-    const json& g = l.required("gravity");
-    if (!g.is_array() || g.size() != 2 || !g[0].is_number() || !g[1].is_number())
-      l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
-    deck.analysis.gravity = Eigen::Vector2d(g[0].get<double>(), g[1].get<double>());
-    if (l.has("base_acceleration")) {
-      StrictObject b = l.object("base_acceleration");
-      deck.base_acceleration = read_base_acceleration(b, math_functions);
-    }
-    l.finish();
-  }
 
   // post_processing.
   {
@@ -667,6 +698,8 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
           throw common::InputError(shown + ": mesh.entity_sets", "particle set " + std::to_string(id) + " names particle " +
                                                                     std::to_string(m) + ", which does not exist");
   }
+
+  read_loads(root, deck, lattice, sets, named_sets, gen, resume.resume, dir);
 
   if (deck.output.uuid.empty()) deck.output.uuid = uuid.empty() ? fs::path(input_file).stem().string() : uuid;
   if (const auto problem = run_name_problem(deck.output.uuid); !problem.empty())

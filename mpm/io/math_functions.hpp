@@ -1,8 +1,10 @@
 #pragma once
-// CB-Geo's math functions (the deck's `math_functions` array, include/functions/linear_function.h): a
-// function of time that scales a load. Only CB-Geo's "Linear" type is read: a table of (x, f(x)) points,
-// interpolated linearly between them and held at the first and last value outside them.
+// CB-Geo's math functions (the deck's `math_functions` array, include/functions/): functions of time that
+// scale a load (base_acceleration, concentrated_nodal_forces, particle_surface_traction). Both of CB-Geo's
+// types are read: "Linear" (a table of points) and "Sin".
+#include <limits>
 #include <map>
+#include <variant>
 #include <vector>
 
 namespace mpm::io {
@@ -16,9 +18,37 @@ struct LinearFunction {
   double value(double at) const;
 };
 
-/// Reads `math_functions` from the root object (absent or []: none): each entry {"id", "type":
-/// "Linear", "xvalues": [...], "fxvalues": [...]}. Errors name the entry and key: an unknown type,
-/// arrays of different lengths or of non-numbers, x not strictly increasing, a duplicate id.
-std::map<unsigned, LinearFunction> read_math_functions(StrictObject& root);
+/// CB-Geo "Sin": f(x) = sin(a (x - x0)) for x in [x_min, x_max], else 0 (CB-Geo SinFunction::value). As in
+/// CB-Geo the range defaults to [the smallest positive double, the largest double], so f(0) = 0.
+struct SinFunction {
+  double a = 0, x0 = 0;
+  double x_min = std::numeric_limits<double>::min(), x_max = std::numeric_limits<double>::max();
+  double value(double at) const;
+};
+
+/// One of CB-Geo's math functions.
+class MathFunction {
+ public:
+  /// f = 1: a load without a math_function_id is not scaled (CB-Geo's scalar 1).
+  MathFunction() : f_(LinearFunction{{0.0}, {1.0}}) {}
+  MathFunction(LinearFunction f) : f_(std::move(f)) {}  // NOLINT(google-explicit-constructor): a function is one of its types
+  MathFunction(SinFunction f) : f_(f) {}                // NOLINT(google-explicit-constructor)
+  double value(double at) const {
+    return std::visit([at](const auto& f) { return f.value(at); }, f_);
+  }
+
+ private:
+  std::variant<LinearFunction, SinFunction> f_;
+};
+
+/// Reads `math_functions` from the root object (absent or []: none): each entry {"id", "type": "Linear",
+/// "xvalues": [...], "fxvalues": [...]} or {"id", "type": "Sin", "a", "x0", <"xrange": [min, max]>}.
+/// Errors name the entry and key: an unknown type, arrays of different lengths or of non-numbers, x not
+/// strictly increasing, an xrange that is not 2 increasing numbers (CB-Geo ignores it), a duplicate id.
+std::map<unsigned, MathFunction> read_math_functions(StrictObject& root);
+
+/// The function `math_function_id` of `functions` (the key read from `entry`); fails naming the key when
+/// there is no such function.
+const MathFunction& math_function_of(StrictObject& entry, const std::map<unsigned, MathFunction>& functions);
 
 }  // namespace mpm::io

@@ -374,8 +374,8 @@ TEST(DeckReaderErrors, UndefinedNodeSetAndMathFunctionsAndVtk) {
   d.deck["mesh"]["boundary_conditions"]["velocity_constraints"][0]["nset_id"] = 9;
   EXPECT_MESSAGE_HAS(d.error(), "velocity_constraints[0].nset_id: node set 9 is not defined");
   SmallDeck m("math");
-  m.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Sin", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
-  EXPECT_MESSAGE_HAS(m.error(), "mpm.json: math_functions[0].type: unsupported math function \"Sin\" (expected Linear)");
+  m.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Cosine", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
+  EXPECT_MESSAGE_HAS(m.error(), "mpm.json: math_functions[0].type: unsupported math function \"Cosine\" (expected Linear or Sin)");
   SmallDeck v("vtk");
   v.deck["post_processing"]["vtk"] = json::parse(R"(["stresses", "pressure"])");
   EXPECT_MESSAGE_HAS(v.error(), "post_processing.vtk: unknown attribute pressure (expected displacements, velocities");
@@ -567,3 +567,88 @@ TEST(DeckReaderErrors, MathFunctionsAndBaseAcceleration) {
   EXPECT_MESSAGE_HAS(with("ba_missing", ok, R"({"dir": 0, "math_function_id": 0})"),
                      "external_loading_conditions.base_acceleration.acceleration: missing");
 }
+
+namespace {
+
+TEST(DeckReader, SinFunctionAsCbGeo) {
+  SmallDeck d("sin_function");
+  d.deck["math_functions"] = json::parse(
+      R"([{"id": 0, "type": "Sin", "a": 3.0, "x0": 0.25},
+          {"id": 1, "type": "Sin", "a": 2.0, "x0": 0.0, "xrange": [-1.0, 1.0]}])");
+  d.deck["external_loading_conditions"]["base_acceleration"] =
+      json::parse(R"({"dir": 1, "acceleration": 2.0, "math_function_id": 0})");
+  const auto b = *d.read().base_acceleration;
+  // CB-Geo SinFunction: sin(a (x - x0)) inside xrange, 0 outside; the default range starts at the
+  // smallest positive double, so f(0) = 0.
+  EXPECT_EQ(b.history.value(0.0), 0.0);
+  EXPECT_EQ(b.history.value(-1.0), 0.0);
+  EXPECT_CLOSE(b.history.value(1.0), std::sin(3.0 * 0.75), 1e-15, 0);
+  EXPECT_CLOSE(b.at(2.0), 2.0 * std::sin(3.0 * 1.75), 1e-15, 0);
+  d.deck["external_loading_conditions"]["base_acceleration"]["math_function_id"] = 1;
+  const auto r = *d.read().base_acceleration;
+  EXPECT_CLOSE(r.history.value(-0.5), std::sin(-1.0), 1e-15, 0);
+  EXPECT_EQ(r.history.value(1.5), 0.0);
+}
+
+TEST(DeckReader, ConcentratedNodalForcesAndParticleTractions) {
+  SmallDeck d("external_loads");
+  d.write("forces.txt", "7 0 5.5\n8 1 -2\n");
+  d.write("entity_sets.json", R"({"node_sets": [{"id": 0, "set": [0, 1, 2, 3, 4]}, {"id": 2, "set": [6, 7]}],
+                                  "particle_sets": [{"id": 5, "set": [2, 3]}]})");
+  d.deck["math_functions"] = json::parse(R"([{"id": 1, "type": "Linear", "xvalues": [0, 1], "fxvalues": [0, 1]}])");
+  d.deck["external_loading_conditions"]["concentrated_nodal_forces"] = json::parse(
+      R"([{"nset_id": 2, "dir": 1, "force": -10.0, "math_function_id": 1}, {"file": "forces.txt"}])");
+  d.deck["external_loading_conditions"]["particle_surface_traction"] = json::parse(
+      R"([{"pset_id": 5, "dir": 1, "traction": -1000.0}, {"pset_id": 0, "dir": 0, "traction": 50.0, "math_function_id": 1},
+          {"pset_id": -1, "dir": 0, "traction": 1.0}])");
+  const auto deck = d.read();
+  ASSERT_EQ(deck.nodal_forces.size(), 3u);
+  EXPECT_EQ(deck.nodal_forces[0].nodes, (std::vector<int>{6, 7}));
+  EXPECT_EQ(deck.nodal_forces[0].dir, 1);
+  EXPECT_EQ(deck.nodal_forces[0].force, -10.0);
+  EXPECT_EQ(deck.nodal_forces[0].function.value(0.5), 0.5);
+  EXPECT_EQ(deck.nodal_forces[1].nodes, (std::vector<int>{7}));  // from the file: "node dir force"
+  EXPECT_EQ(deck.nodal_forces[1].dir, 0);
+  EXPECT_EQ(deck.nodal_forces[1].force, 5.5);
+  EXPECT_EQ(deck.nodal_forces[1].function.value(0.5), 1.0);  // no function: scaled by 1
+  EXPECT_EQ(deck.nodal_forces[2].force, -2.0);
+  ASSERT_EQ(deck.particle_tractions.size(), 3u);
+  EXPECT_EQ(deck.particle_tractions[0].particles, (std::vector<std::int64_t>{2, 3}));  // an entity set
+  EXPECT_EQ(deck.particle_tractions[1].particles, (std::vector<std::int64_t>{0, 1, 2, 3}));  // the generator's pset_id
+  EXPECT_EQ(deck.particle_tractions[1].dir, 0);
+  EXPECT_EQ(deck.particle_tractions[1].function.value(0.25), 0.25);
+  EXPECT_EQ(deck.particle_tractions[2].particles.size(), 4u);  // -1: every particle
+}
+
+TEST(DeckReaderErrors, ConcentratedNodalForcesAndParticleTractions) {
+  const auto with = [](const std::string& name, const char* key, const char* list) {
+    SmallDeck d(name);
+    d.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Linear", "xvalues": [0], "fxvalues": [1]}])");
+    d.deck["external_loading_conditions"][key] = json::parse(list);
+    d.write("forces.txt", "3 2 1.0\n");
+    return d.error();
+  };
+  const char* nodal = "concentrated_nodal_forces";
+  const char* traction = "particle_surface_traction";
+  EXPECT_MESSAGE_HAS(with("nf_set", nodal, R"([{"nset_id": 4, "dir": 0, "force": 1}])"),
+                     "external_loading_conditions.concentrated_nodal_forces[0].nset_id: node set 4 is not defined");
+  EXPECT_MESSAGE_HAS(with("nf_dir", nodal, R"([{"nset_id": 0, "dir": 2, "force": 1}])"),
+                     "concentrated_nodal_forces[0].dir: expected 0 (x) or 1 (y), got 2");
+  EXPECT_MESSAGE_HAS(with("nf_force", nodal, R"([{"nset_id": 0, "dir": 0, "force": "1"}])"),
+                     "concentrated_nodal_forces[0].force: expected a number");
+  EXPECT_MESSAGE_HAS(with("nf_fn", nodal, R"([{"nset_id": 0, "dir": 0, "force": 1, "math_function_id": 3}])"),
+                     "concentrated_nodal_forces[0].math_function_id: no math function with id 3 in math_functions");
+  EXPECT_MESSAGE_HAS(with("nf_file", nodal, R"([{"file": "forces.txt"}])"), "forces.txt: entry 0: dir must be 0 or 1");
+  EXPECT_MESSAGE_HAS(with("nf_key", nodal, R"([{"nset_id": 0, "dir": 0, "force": 1, "phase": 0}])"),
+                     "concentrated_nodal_forces[0].phase: unsupported key");
+  EXPECT_MESSAGE_HAS(with("pt_set", traction, R"([{"pset_id": 9, "dir": 1, "traction": 1}])"),
+                     "external_loading_conditions.particle_surface_traction[0].pset_id: particle set 9 is not defined");
+  EXPECT_MESSAGE_HAS(with("pt_missing", traction, R"([{"pset_id": 0, "dir": 1}])"),
+                     "particle_surface_traction[0].traction: missing");
+  EXPECT_MESSAGE_HAS(with("pt_list", traction, R"({"pset_id": 0})"), "external_loading_conditions.particle_surface_traction: expected an array");
+  SmallDeck sin("sin_range");
+  sin.deck["math_functions"] = json::parse(R"([{"id": 0, "type": "Sin", "a": 1, "x0": 0, "xrange": [1, 0]}])");
+  EXPECT_MESSAGE_HAS(sin.error(), "math_functions[0].xrange: expected [min, max] with min <= max");
+}
+
+}  // namespace

@@ -48,8 +48,7 @@ Shaken shake(double amplitude, Scheme scheme, double t_end) {
   mpm::io::BaseAcceleration base;
   base.dir = 0;
   base.acceleration = amplitude;
-  base.history.x = {0.0, kPulse, kPulse + 1e-9};  // a rectangular pulse of length kPulse
-  base.history.fx = {1.0, 1.0, 0.0};
+  base.history = mpm::io::LinearFunction{{0.0, kPulse, kPulse + 1e-9}, {1.0, 1.0, 0.0}};  // a rectangular pulse of length kPulse
   deck.base_acceleration = base;
   mpm::core::Simulation sim(deck, 1);
   Shaken s;
