@@ -17,6 +17,7 @@
 #include "bridge/fem_model.hpp"
 #include "bridge/fem_state_reader.hpp"
 #include "bridge/mpm_deck.hpp"
+#include "bridge/nodal_loads.hpp"
 #include "bridge/particle_mapping.hpp"
 #include "bridge/transfer_report.hpp"
 #include "common/atomic_file.hpp"
@@ -29,7 +30,7 @@ namespace bridge {
 namespace {
 
 struct CliOptions {
-  std::string model, disp, vel, stress, out;
+  std::string model, disp, vel, stress, loads, out;
   std::optional<double> time;
   std::optional<long> row;
   std::string nodes, elements;
@@ -88,9 +89,26 @@ struct Timing {
   double read = 0, map = 0, report_deck = 0, write_text = 0, write_h5 = 0;
 };
 
+/// What --loads carried over: loaded FEM nodes and their total, and the particles that carry it.
+struct LoadSummary {
+  std::size_t nodes = 0, particles = 0;
+  Vec2 fem_total = Vec2::Zero(), particle_total = Vec2::Zero();  ///< N per unit thickness
+};
+LoadSummary summarize_loads(const TransferState& state, const std::vector<ParticleLoad>& loads) {
+  LoadSummary s;
+  for (const Vec2& f : state.load)
+    if (!f.isZero(0.0)) {
+      ++s.nodes;
+      s.fem_total += f;
+    }
+  s.particles = loads.size();
+  for (const auto& l : loads) s.particle_total += l.force;
+  return s;
+}
+
 void print_report(std::ostream& out, const AssembledState& a, const TransferReport& r, const DeckText& d,
                   const CliOptions& o, const std::vector<BoundaryChoice>& boundaries, const std::filesystem::path& outdir,
-                  const Timing& t) {
+                  const Timing& t, const LoadSummary& loads) {
   out << "fem2mpm: FEM state at t = " << fmt(a.state.time, 9) << " s -> " << r.particle_count << " particles ("
       << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd << "), stress recovery "
       << (o.recovery == "spr" ? "SPR (Zienkiewicz-Zhu)" : "inverse-distance weighting") << "\n";
@@ -117,6 +135,11 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
     out << "  ground motion: " << o.ground_motion << " from FEM t = " << fmt(a.state.time, 9) << " s as base_acceleration (dir "
         << o.ground_motion_dir << "), " << d.base_motion.t.size() << " points to MPM t = " << fmt(d.base_motion.t.back(), 6)
         << " s\n";
+  if (!o.loads.empty())
+    out << "  loads: " << loads.nodes << " loaded FEM nodes, total (" << fmt(loads.fem_total.x(), 6) << ", "
+        << fmt(loads.fem_total.y(), 6) << ") N/m, carried by " << loads.particles << " particles (total ("
+        << fmt(loads.particle_total.x(), 6) << ", " << fmt(loads.particle_total.y(), 6)
+        << ") N/m) as particle_surface_traction, held at their transfer-time value\n";
   out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, ";
   for (const auto& f : d.particle_files) out << f.first << ", ";
   out << "report.json in " << outdir.string() << "\n";
@@ -129,6 +152,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   ReadOptions ro;
   ro.disp = o.disp;
   ro.vel = o.vel;
+  ro.loads = o.loads;
   ro.stress = o.stress;
   ro.time = o.time;
   ro.row = o.row;
@@ -184,6 +208,9 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     return s;
   };
   Timing timing;
+  if (!o.loads.empty() && deck.ground_motion)
+    throw common::InputError("--loads", "not with --ground-motion: OpenSees' unbalance holds UniformExcitation's inertia "
+                                        "load -M a_g besides the patterns' loads, which cannot be told apart");
   // 1. Read and check everything (no output yet).
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
@@ -203,6 +230,8 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   // 2. Map.
   const auto nodal = recover_nodal_stress(state, mo.recovery);
   const auto particles = generate_particles(state, nodal, mo);
+  deck.particle_loads = particle_loads(state, mo.particles_per_direction);
+  const LoadSummary load_summary = summarize_loads(state, deck.particle_loads);
   timing.map = lap();
   DeckText d = plan_deck(state, particles, deck);  // the last check that can fail on user input
   // APIC: the particles' affine matrices from the FEM velocity gradient (affine_state.hpp).
@@ -265,6 +294,10 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     rj["notes"] = assembled.notes;
     rj["warnings"] = warnings;
     rj["boundaries"] = boundaries_json(boundaries, d);
+    if (!o.loads.empty())
+      rj["loads"] = {{"file", o.loads}, {"nodes", load_summary.nodes}, {"particles", load_summary.particles},
+                     {"fem_total", {load_summary.fem_total.x(), load_summary.fem_total.y()}},
+                     {"particle_total", {load_summary.particle_total.x(), load_summary.particle_total.y()}}};
     if (!d.base_motion.t.empty())
       rj["ground_motion"] = {{"file", o.ground_motion}, {"dir", o.ground_motion_dir}, {"points", d.base_motion.t.size()},
                              {"mpm_time", {d.base_motion.t.front(), d.base_motion.t.back()}}};
@@ -295,7 +328,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     std::filesystem::remove(h5_path, ec);
     throw;
   }
-  if (!o.quiet) print_report(out, assembled, report, d, o, boundaries, outdir, timing);
+  if (!o.quiet) print_report(out, assembled, report, d, o, boundaries, outdir, timing, load_summary);
   if (!out.flush()) throw common::OutputError("standard output: writing the report failed (the deck in " + outdir.string() + " is complete)");
   return 0;
 }
@@ -315,6 +348,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   // Inputs.
   app.add_option("--model", o.model, "model description written by `print -JSON -file f`")->required()->group("Inputs");
   app.add_option("--disp", o.disp, "Node recorder file: -time ... -dof 1 2 disp")->required()->group("Inputs");
+  app.add_option("--loads", o.loads,
+                 "Node recorder file: -time ... -dof 1 2 unbalance (the applied nodal loads, e.g. a surcharge): carried by the "
+                 "particles around each loaded node as particle_surface_traction, held at the transfer-time value")
+      ->group("Inputs");
   app.add_option("--vel", o.vel, "Node recorder file: -time ... -dof 1 2 vel (optional: without it the particles start at rest)")->group("Inputs");
   app.add_option("--stress", o.stress,
                  "Element recorder file: -time ... stress (3 values per Gauss point: szz = nu (sxx + syy) is derived) "

@@ -281,6 +281,14 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   } else {
     out.notes.push_back("no velocity file (--vel): the particles start at rest (zero velocity)");
   }
+  if (!options.loads.empty()) {  // forces: kN -> N like the stresses
+    const RecorderFile loads(options.loads);
+    check_node_width(loads, loads.rows().size() - 1);
+    const auto f = loads.values(pick_row(loads, t, std::nullopt, out.notes));
+    st.load.assign(nn, Vec2::Zero());
+    for (std::size_t k = 0; k < node_tags.size(); ++k)
+      st.load[static_cast<std::size_t>(model.node_index(node_tags[k]))] = factor * Vec2(f[2 * k], f[2 * k + 1]);
+  }
 
   // --- materials (ids in name order) and elements
   std::map<std::string, unsigned> material_ids;

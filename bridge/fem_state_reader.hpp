@@ -28,6 +28,8 @@ struct MaterialOverrides {
 
 struct ReadOptions {
   std::filesystem::path disp, vel, stress;  ///< vel may be empty (zero velocities)
+  /// A Node recorder of `unbalance` (the applied nodal loads); empty: no loads carried over.
+  std::filesystem::path loads;
   std::optional<double> time;               ///< transfer time; neither time nor row: the last row
   std::optional<long> row;                  ///< 1-based row (negative from the end)
   std::optional<std::vector<long>> nodes;   ///< the Node recorders' node order (default: all, tag order)

@@ -269,6 +269,20 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
     }
   ordered_json sets;
   sets["node_sets"] = ordered_json::array({{{"id", 0}, {"set", left}}, {{"id", 1}, {"set", base}}, {{"id", 2}, {"set", right}}});
+  // The FEM's loads: particle set k holds the k-th loaded particle; its traction t = f sqrt(V0) / V gives
+  // mpm's force t V / sqrt(V0) = f (mpm/core/external_loads.hpp, V0 = m / rho).
+  ordered_json tractions = ordered_json::array(), particle_sets = ordered_json::array();
+  for (std::size_t k = 0; k < options.particle_loads.size(); ++k) {
+    const ParticleLoad& load = options.particle_loads[k];
+    const auto& p = particles[static_cast<std::size_t>(load.id)];
+    if (p.id != load.id) throw std::logic_error("format_deck: particles are not in id order");
+    const double rho = state.materials[p.material_id].density;
+    particle_sets.push_back({{"id", k}, {"set", {load.id}}});
+    for (int dir = 0; dir < 2; ++dir)
+      if (load.force[dir] != 0.0)
+        tractions.push_back({{"pset_id", k}, {"dir", dir}, {"traction", load.force[dir] * std::sqrt(p.mass / rho) / p.volume}});
+  }
+  if (!particle_sets.empty()) sets["particle_sets"] = particle_sets;
   d.entity_sets_json = sets.dump(1) + "\n";
 
   // Boundary conditions (CB-Geo velocity_constraints / friction_constraints).
@@ -335,6 +349,7 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   for (const auto& m : state.materials) mats.push_back(material_json(m));
   deck["materials"] = mats;
   deck["external_loading_conditions"] = {{"gravity", {0.0, -state.gravity}}};
+  if (!tractions.empty()) deck["external_loading_conditions"]["particle_surface_traction"] = tractions;
   if (!d.base_motion.t.empty()) {
     deck["math_functions"] = ordered_json::array(
         {{{"id", 0}, {"type", "Linear"}, {"xvalues", d.base_motion.t}, {"fxvalues", d.base_motion.a}}});

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bridge/ground_motion.hpp"
+#include "bridge/nodal_loads.hpp"
 #include "bridge/transfer_state.hpp"
 #include "mpm/io/particle_table.hpp"
 
@@ -55,6 +56,9 @@ struct DeckOptions {
   double damping = 0;                         ///< Cundall damping factor
   /// The record that goes on shaking the base after the transfer (ground_motion.hpp); unset: none.
   std::optional<GroundMotion> ground_motion;
+  /// The FEM's nodal loads on the particles (nodal_loads.hpp); written as one particle set and one
+  /// particle_surface_traction per loaded particle and direction.
+  std::vector<ParticleLoad> particle_loads;
 };
 
 /// The background grid: cells cover [x0, x0 + nx h] x [y0, y0 + ny h]; GIMP adds one node ring.

@@ -38,6 +38,7 @@ struct TransferState {
   std::vector<Vec2> reference;            ///< node reference coordinates, m
   std::vector<Vec2> displacement;         ///< m
   std::vector<Vec2> velocity;             ///< m/s
+  std::vector<Vec2> load;                 ///< applied nodal loads, N per unit thickness (--loads; empty: none)
   std::vector<TransferElement> elements;
   std::vector<std::size_t> gauss_offset;  ///< element e's Gauss points are [gauss_offset[e], gauss_offset[e+1])
   std::vector<Stress6> gauss_stress;      ///< Pa

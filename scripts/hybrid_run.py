@@ -10,6 +10,8 @@ output folder as its FIRST argument and writes there
     disp.out     recorder Node -file [file join $out disp.out] -time -nodeRange 1 $nNodes -dof 1 2 disp
     vel.out      recorder Node -file [file join $out vel.out]  -time -nodeRange 1 $nNodes -dof 1 2 vel
     stress.out   recorder Element -file [file join $out stress.out] -time -eleRange 1 $nEle stress3D
+and, for a model with applied nodal loads (a surcharge, a footing) that the MPM run must keep carrying,
+    loads.out    recorder Node -file [file join $out loads.out] -time -nodeRange 1 $nNodes -dof 1 2 unbalance
 with a row at the transfer time T (e.g. `-dT` a divisor of T, or land a step on T). Then
 `fem2mpm ... --time T --duration D` writes the particles and the MPM deck into DIR/mpm, `mpm` runs it,
 and DIR receives what an engineer looks at:
@@ -27,7 +29,7 @@ and DIR receives what an engineer looks at:
 
 Options that are not the driver's own (below) go to fem2mpm unchanged (bridge/README.md: --units kN,
 --ppd, --cell-size, --extent, --left-wall, --right-wall, --base, --base-friction, --base-y, --material-type,
---phi, --cohesion, --scheme, --cfl, ...); --model, --disp, --vel, --stress, --time, --row and --out are
+--phi, --cohesion, --scheme, --cfl, ...); --model, --disp, --vel, --stress, --loads, --time, --row and --out are
 set by the driver. Everything after `--` goes to the script. Errors: one line on stderr; exit 2 for bad
 input (a missing model, an option without its value, a script that does not write the contracted files,
 a transfer time the FEM did not record), 1 when a stage fails otherwise.
@@ -54,7 +56,7 @@ DRIVER_OPTIONS = {"--transfer": True, "--duration": True, "--out": True, "--bin"
 # what the driver writes into DIR (removed first, so a failed run never leaves an older one behind)
 OUTPUTS = ("fem", "mpm", "series.csv", "summary.md", "fem_mesh_T.png", "particles_T.png", "particles_end.png",
            "runout.png", "energy.png")
-SET_BY_DRIVER = ("--model", "--disp", "--vel", "--stress", "--time", "--row", "--out")
+SET_BY_DRIVER = ("--model", "--disp", "--vel", "--stress", "--loads", "--time", "--row", "--out")
 
 
 class OneLineParser(argparse.ArgumentParser):

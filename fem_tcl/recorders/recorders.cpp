@@ -76,6 +76,7 @@ void NodeRecorder::collect(std::vector<double>& row) {
       case NodeResponse::Accel: v = &n->accel; break;
       case NodeResponse::IncrDisp: v = &n->incr_disp; break;
       case NodeResponse::Reaction: v = &n->reaction; break;
+      case NodeResponse::Unbalance: v = &n->load; break;
     }
     for (int d : dofs_) row.push_back((*v)[d]);
   }
@@ -176,7 +177,8 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     else if (w == "accel") r = NodeResponse::Accel;
     else if (w == "incrDisp") r = NodeResponse::IncrDisp;
     else if (w == "reaction") r = NodeResponse::Reaction;
-    else args.fail("unknown node response '" + w + "' (disp, vel, accel, incrDisp or reaction)");
+    else if (w == "unbalance") r = NodeResponse::Unbalance;
+    else args.fail("unknown node response '" + w + "' (disp, vel, accel, incrDisp, reaction or unbalance)");
     if (response.size() > 1) args.fail("unexpected argument '" + response[1] + "' after the response");
     std::vector<domain::Node*> nodes;
     for (int t : tags) nodes.push_back(&domain.node(t, args.command()));

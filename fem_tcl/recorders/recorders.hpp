@@ -43,7 +43,9 @@ class TextRecorder : public domain::Recorder {
   std::vector<double> row_;
 };
 
-enum class NodeResponse { Disp, Vel, Accel, IncrDisp, Reaction };
+/// Node responses; Unbalance is OpenSees' "unbalance" (Node::getUnbalancedLoad): the applied nodal loads of the
+/// patterns at the step, with UniformExcitation's inertia load -M R a_g (EarthquakePattern::applyLoad).
+enum class NodeResponse { Disp, Vel, Accel, IncrDisp, Reaction, Unbalance };
 
 class NodeRecorder final : public TextRecorder {
  public:

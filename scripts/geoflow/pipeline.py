@@ -5,6 +5,9 @@ The FEM output contract (what a script run by `fem_tcl SCRIPT OUTDIR ...` must l
     disp.out     `recorder Node -file OUTDIR/disp.out -time -nodeRange 1 N -dof 1 2 disp` (all nodes, tag order)
     vel.out      the same with `vel`
     stress.out   `recorder Element -file OUTDIR/stress.out -time -eleRange 1 M stress3D` (or `stress`)
+and, optionally,
+    loads.out    the same Node recorder with `unbalance`: the applied nodal loads (a surcharge), which the
+                 particles then carry (fem2mpm --loads)
 """
 import json
 import os
@@ -88,6 +91,8 @@ def run_fem2mpm(bins, fem_dir, out, t_transfer, options=(), logfile=None):
     cmd = [bins["fem2mpm"], "--model", os.path.join(fem_dir, "model.json"), "--disp", os.path.join(fem_dir, "disp.out"),
            "--vel", os.path.join(fem_dir, "vel.out"), "--stress", os.path.join(fem_dir, "stress.out"),
            "--time", "%.10g" % t_transfer, "--out", out] + list(options)
+    if os.path.exists(os.path.join(fem_dir, "loads.out")):
+        cmd += ["--loads", os.path.join(fem_dir, "loads.out")]
     parent = os.path.dirname(os.path.abspath(out))
     os.makedirs(parent, exist_ok=True)
     tmp_log = logfile or os.path.join(parent, os.path.basename(out) + "_fem2mpm.log")

@@ -318,3 +318,36 @@ analyze 1200 0.005
 }
 
 }  // namespace
+
+namespace {
+
+// recorder Node ... unbalance: the applied nodal loads of the step (OpenSees Node::getUnbalancedLoad), here
+// a Linear pattern's load at 0.5 and 1.0 of its factor; fem2mpm --loads reads it.
+TEST(TclCommands, NodeRecorderUnbalanceHoldsTheAppliedLoads) {
+  test_support::ScratchDir dir("fem_tcl_unbalance");
+  Interpreter interp;
+  const std::string f = (dir.path() / "loads.out").string();
+  ASSERT_EQ(error_of(interp, std::string(kOneSSPquad) + R"tcl(
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+timeSeries Linear 1
+pattern Plain 1 1 { load 3 2.0 -6.0; load 4 0.0 -4.0 }
+recorder Node -file )tcl" + f + R"tcl( -time -node 3 4 -dof 1 2 unbalance
+constraints Plain
+numberer Plain
+system BandGeneral
+test NormDispIncr 1e-10 5
+algorithm Newton
+integrator LoadControl 0.5
+analysis Static
+analyze 2
+)tcl"), "");
+  interp.context().domain.flush_recorders();
+  const auto rows = test_support::read_numeric_table(f);
+  ASSERT_EQ(rows.size(), 2u);
+  const std::vector<double> half = {0.5, 1.0, -3.0, 0.0, -2.0}, full = {1.0, 2.0, -6.0, 0.0, -4.0};
+  EXPECT_EQ(rows[0], half);
+  EXPECT_EQ(rows[1], full);
+  EXPECT_NE(error_of(interp, "recorder Node -file x.out -node 3 -dof 1 loads").find("unbalance"), std::string::npos);
+}
+
+}  // namespace
