@@ -64,10 +64,11 @@ Wall parse_wall(const std::string& s, const char* option) {
 }
 
 Base parse_base(const std::string& s) {
+  if (s == "contact") return Base::Contact;
   if (s == "friction") return Base::Friction;
   if (s == "roller") return Base::Roller;
   if (s == "fixed") return Base::Fixed;
-  throw common::InputError("--base", "expected friction, roller or fixed, got '" + s + "'");
+  throw common::InputError("--base", "expected contact, friction, roller or fixed, got '" + s + "'");
 }
 
 std::string fmt(double v, int precision = 6) { return common::number_text(v, precision); }
@@ -391,7 +392,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--cell-type", o.cell_type, "ED2Q16G (GIMP, with CB-Geo's halo node ring) or ED2Q4")->capture_default_str()->group("MPM deck");
   app.add_option("--left-wall", o.left_wall, "grid's left boundary: roller (x-velocity 0), fixed or none (default: from the FEM supports, else roller)")->group("MPM deck");
   app.add_option("--right-wall", o.right_wall, "grid's right boundary: roller, fixed or none (default: from the FEM supports, else roller at the far end of the runout area)")->group("MPM deck");
-  app.add_option("--base", o.base, "grid's base: friction (y-velocity 0 + Coulomb friction), roller or fixed (default: from the FEM supports: a roller line -> roller, a fixed line -> friction; else friction)")->group("MPM deck");
+  app.add_option("--base", o.base, "grid's base: contact (one-sided frictional contact: stops the approach, Coulomb friction; the soil may leave it), friction (CB-Geo's: y-velocity 0 + Coulomb friction), roller or fixed (default: from the FEM supports: a roller line -> roller, a fixed line -> contact; else contact)")->group("MPM deck");
   app.add_flag("--ignore-supports", o.ignore_supports, "do not carry the FEM supports over: walls, base and grid from the options and the legacy defaults")->group("MPM deck");
   app.add_option("--base-friction", o.deck.base_friction, "base friction coefficient mu (CB-Geo friction_constraints)")->capture_default_str()->group("MPM deck");
   app.add_option("--base-y", o.deck.base_y, "height of the base, m: the base constraint acts on every node at or below it (default: the FEM base support line, else the grid's bottom edge; with GIMP and --extent give the FEM base and an extent one cell lower)")->group("MPM deck");

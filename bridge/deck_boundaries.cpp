@@ -18,6 +18,7 @@ std::string wall_text(Wall w) {
 
 std::string base_text(const DeckOptions& deck) {
   switch (deck.base) {
+    case Base::Contact: return "contact mu = " + num(deck.base_friction) + " (one-sided: stops the approach, Coulomb friction)";
     case Base::Friction: return "friction mu = " + num(deck.base_friction) + " (y-velocity 0, Coulomb friction)";
     case Base::Roller: return "roller (y-velocity 0)";
     case Base::Fixed: return "fixed (x- and y-velocity 0)";
@@ -63,8 +64,8 @@ std::vector<BoundaryChoice> apply_supports(const ExtractedBoundaries& supports, 
   else if (!supports.from_model) b.source = "default (no FEM supports in the model file)";
   else if (!base) b.source = "default (the FEM model has no support on its base)";
   else {
-    // A fixed FEM base becomes the frictional base (--base-friction); --base fixed makes it fixed.
-    deck.base = base->kind == SupportKind::Fixed ? Base::Friction : Base::Roller;
+    // A fixed FEM base becomes the frictional contact (--base-friction); --base fixed makes it fixed.
+    deck.base = base->kind == SupportKind::Fixed ? Base::Contact : Base::Roller;
     b.source = "FEM support";
   }
   b.condition = base_text(deck);

@@ -207,7 +207,7 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   if (options.base_y) d.base_y = *options.base_y;
   else if (support_base && *support_base >= g.y0 && *support_base < grid_top) d.base_y = *support_base;
   else d.base_y = g.y0;
-  if (options.base == Base::Friction)
+  if (options.base == Base::Friction || options.base == Base::Contact)
     common::checked_number(options.base_friction, mpm::io::kFrictionCoefficientRange, "--base-friction");
   common::checked_number(options.damping, mpm::io::kDampingFactorRange, "--damping");
   if (const auto problem = mpm::io::run_name_problem(options.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
@@ -294,9 +294,9 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   };
   wall(options.left, 0);
   wall(options.right, 2);
-  vel.push_back({{"nset_id", 1}, {"dir", 1}, {"velocity", 0.0}});
+  if (options.base != Base::Contact) vel.push_back({{"nset_id", 1}, {"dir", 1}, {"velocity", 0.0}});
   if (options.base == Base::Fixed) vel.push_back({{"nset_id", 1}, {"dir", 0}, {"velocity", 0.0}});
-  if (options.base == Base::Friction) {
+  if (options.base == Base::Friction || options.base == Base::Contact) {
     fric.push_back({{"nset_id", 1}, {"dir", 1}, {"sign_n", -1}, {"friction", options.base_friction}});
   }
 

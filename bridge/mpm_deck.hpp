@@ -18,7 +18,11 @@
 namespace bridge {
 
 enum class Wall { None, Roller, Fixed };
-enum class Base { Friction, Roller, Fixed };
+/// The grid's base. Contact: a one-sided frictional contact (mpm's reading of a friction constraint without a
+/// normal velocity constraint: the base stops the soil's approach, never pulls it, and friction acts where it
+/// presses); Friction: CB-Geo's frictional base (y-velocity 0, bilateral, and Coulomb friction), on which an
+/// elastic body sliding under FLIP or APIC flutters and stalls (mpm/README.md "Friction and flutter").
+enum class Base { Contact, Friction, Roller, Fixed };
 
 /// Where the FEM supports put the grid's edges (boundary_extraction): the default grid is aligned so that
 /// each is a grid line and is extended only beyond the free sides. Unset members are free sides.
@@ -34,7 +38,7 @@ struct DeckOptions {
   std::optional<std::array<double, 4>> extent;///< xmin xmax ymin ymax; default bounding box + 3 widths right, 0.25 height up
   bool gimp = true;                           ///< ED2Q16G (true) or ED2Q4
   Wall left = Wall::Roller, right = Wall::Roller;
-  Base base = Base::Friction;
+  Base base = Base::Contact;
   double base_friction = 0.4;
   /// m; the base node set (and its constraint) is every node at or below this height. Default: the grid's
   /// bottom edge. Give the FEM base (e.g. 0) with an extent one cell row lower, so that a GIMP particle

@@ -141,9 +141,11 @@ def transfer_keys(transfer, pic_blend):
 
 
 def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None, pic_blend=PIC_BLEND,
-                        transfer=TRANSFER):
+                        transfer=TRANSFER, base="friction"):
     """MPM only: particles on the MPM grid (ppd x ppd per cell, at the centres of equal sub-cells), K0
-    elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v."""
+    elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v.
+    base "friction": CB-Geo's base (y-velocity 0 and Coulomb friction); "contact": the friction constraint
+    alone, which mpm takes as a one-sided frictional contact (fem2mpm --base contact)."""
     os.makedirs(d, exist_ok=True)
     h, n = scene.cell, scene.ppd
     nx, ny = int(round(scene.width / h)), int(round(scene.height / h))
@@ -186,8 +188,8 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
                  "cell_type": "ED2Q16G", "entity_sets": "entity_sets.json",
                  "particles_stresses": "particles_stresses.txt", "particles_volumes": "particles_volumes.txt",
                  "boundary_conditions": {
-                     "velocity_constraints": [{"nset_id": "left", "dir": 0, "velocity": 0.0},
-                                              {"nset_id": 1, "dir": 1, "velocity": 0.0}],
+                     "velocity_constraints": [{"nset_id": "left", "dir": 0, "velocity": 0.0}] +
+                                             ([{"nset_id": 1, "dir": 1, "velocity": 0.0}] if base == "friction" else []),
                      "friction_constraints": [{"nset_id": 1, "dir": 1, "sign_n": -1, "friction": BASE_MU}]}},
         "particles": [{"generator": {"type": "file", "location": "particles.txt", "io_type": "Ascii2D",
                                      "check_duplicates": False, "particle_type": "P2D", "material_id": 0,
@@ -209,11 +211,11 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
 
 
 def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None,
-                 pic_blend=PIC_BLEND, transfer=TRANSFER):
+                 pic_blend=PIC_BLEND, transfer=TRANSFER, base="friction"):
     d = os.path.join(out, name)
     if os.path.isdir(d):
         shutil.rmtree(d)
-    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer)
+    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer, base)
     w = pipeline.run_mpm(bins, d, threads)
     with open(os.path.join(d, "wall.txt"), "w") as f:
         f.write("%.3f\n" % w)

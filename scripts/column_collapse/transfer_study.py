@@ -2,10 +2,11 @@
 """FLIP, PIC, a 2 % PIC blend and APIC side by side on MPM-only column collapses (issue 10 item 3).
 
     scripts/column_collapse/transfer_study.py [--out DIR] [--jobs N] [--aspect 3,0.8] [--transfers flip,pic,blend,apic]
-                                              [--halved apic] [--tau 7] [--smoothing none]
+                                              [--halved apic] [--tau 7] [--smoothing none] [--base friction]
 
 Each run: the paper's soil (study.py), GIMP cells of 1 m (and 0.5 m for --halved transfers), 4 x 4 particles
-per cell, MUSL, CFL 0.5, base friction tan(phi), analysis.stress_smoothing --smoothing, to t = --tau * tau_c (tau_c = sqrt(H0 / g)). Columns:
+per cell, MUSL, CFL 0.5, base friction tan(phi), analysis.stress_smoothing --smoothing, the base --base
+(friction: y-velocity 0 and Coulomb friction, CB-Geo's; contact: one-sided frictional contact), to t = --tau * tau_c (tau_c = sqrt(H0 / g)). Columns:
 a = 3 is 10 m x 30 m, a = 0.8 the paper's 50 m x 40 m. Per run: runout (L - L0)/L0 and PE/PE0 at the end, the
 largest particle speed and KE/PE0 at the end, the time (t/tau_c) after which the run stays at rest
 (max speed < 0.05 m/s and KE/PE0 < 1e-5), and the wall time per step (on whatever machine ran it). Writes
@@ -29,15 +30,16 @@ COLUMNS = {3.0: (10.0, 30.0), 0.8: (50.0, 40.0)}
 REST_SPEED, REST_KE = 0.05, 1e-5
 
 
-def run_one(bins, out, a, key, cell, tau, smoothing):
+def run_one(bins, out, a, key, cell, tau, smoothing, base):
     width, height = COLUMNS[a]
     scene = study.Scene(width, height, cell, 4, out_every=0.1)
     transfer, blend = TRANSFERS[key]
-    name = "a%g_%s_h%g" % (a, key, cell) + ("" if smoothing == "none" else "_" + smoothing)
+    name = "a%g_%s_h%g" % (a, key, cell) + ("" if smoothing == "none" else "_" + smoothing) + \
+        ("" if base == "friction" else "_" + base)
     t0 = time.time()
     try:
         run = study.run_mpm_only(bins, scene, out, 1, name, duration=tau * scene.tau_c, pic_blend=blend,
-                                 transfer=transfer, smoothing=smoothing)
+                                 transfer=transfer, smoothing=smoothing, base=base)
     except RuntimeError as e:
         return {"name": name, "a": a, "key": key, "cell": cell, "failed": str(e).splitlines()[-1][:200]}
     s = study.read_series(run["results"])
@@ -81,6 +83,8 @@ def main(argv=None):
     ap.add_argument("--halved", default="apic", help="transfers also run with 0.5 m cells ('' for none)")
     ap.add_argument("--tau", type=float, default=7.0, help="end time in units of tau_c")
     ap.add_argument("--smoothing", default="none", help="analysis.stress_smoothing of every run (e.g. cell_strain)")
+    ap.add_argument("--base", default="friction", choices=("friction", "contact"),
+                    help="friction: y-velocity 0 + Coulomb (CB-Geo); contact: one-sided frictional contact")
     ap.add_argument("--bin", default=os.path.join(study.REPO, "build", "bin"))
     args = ap.parse_args(argv)
     bins = {"mpm": os.path.join(args.bin, "mpm")}
@@ -95,7 +99,7 @@ def main(argv=None):
             jobs.append((a, key, 0.5))
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(run_one, bins, args.out, a, key, cell, args.tau, args.smoothing) for a, key, cell in jobs]
+        futures = [pool.submit(run_one, bins, args.out, a, key, cell, args.tau, args.smoothing, args.base) for a, key, cell in jobs]
         for f in concurrent.futures.as_completed(futures):
             r = f.result()
             results.append(r)

@@ -112,8 +112,8 @@ inline Deck collapsing_column(const mpm::io::Grid& grid, const mpm::io::Material
 
 /// An elastic block sliding down a Coulomb base: gravity rotated by `angle_deg` (g (sin a, -cos a)), the
 /// block [x0, x0 + width] x [0, height] (ppd x ppd particles per cell) on the base y = 0 of a grid of
-/// `cells_x` x ceil(height / h) + 1 cells, which is fixed in y and carries CB-Geo's friction constraint
-/// (dir 1, sign_n -1, coefficient mu). The block starts at rest in its K0 = nu / (1 - nu) state under
+/// `cells_x` x ceil(height / h) + 1 cells, which carries CB-Geo's friction constraint (dir 1, sign_n -1,
+/// coefficient mu) and, unless one_sided, is fixed in y. The block starts at rest in its K0 = nu / (1 - nu) state under
 /// the normal gravity component. Analytic motion (rigid block, Coulomb friction; e.g. Bardenhagen,
 /// Brackbill & Sulsky 2000, CMAME 187, section 5): for mu < tan a, x(t) = a_s t^2 / 2, v = a_s t with
 /// a_s = g (sin a - mu cos a); for mu >= tan a it stays at rest. The caller sets the scheme and dt.
@@ -124,6 +124,9 @@ struct SlidingBlockSpec {
   int cells_x = 40, ppd = 2;
   double rho = 1000, E = 1e6, nu = 0.3;
   CellType type = CellType::Linear4;
+  /// true: the base is the friction constraint alone, a one-sided frictional contact (fem2mpm --base
+  /// contact); false: CB-Geo's base, also fixed in y (bilateral).
+  bool one_sided = false;
 };
 inline Deck sliding_block(const SlidingBlockSpec& s) {
   constexpr double g = 9.81;
@@ -138,7 +141,7 @@ inline Deck sliding_block(const SlidingBlockSpec& s) {
     p.stress_xx = p.stress_zz = k0 * p.stress_yy;
   }
   const auto base = nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; });
-  deck.velocity_constraints.push_back({base, 1, 0.0});
+  if (!s.one_sided) deck.velocity_constraints.push_back({base, 1, 0.0});
   deck.friction_constraints.push_back({base, 1, -1, s.mu});
   deck.analysis.gravity = {g * std::sin(a), -g * std::cos(a)};
   return deck;

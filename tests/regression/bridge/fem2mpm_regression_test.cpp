@@ -282,7 +282,7 @@ TEST(Fem2mpmRegression, SupportsTheGridCannotCarryWarnAndMalformedOnesFail) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("fem2mpm: warning: FEM supports at nodes 17 cannot be represented on the MPM grid (a single point"),
             std::string::npos) << r.err;
-  EXPECT_NE(r.out.find("base at y = 0: friction mu = 0.4 (y-velocity 0, Coulomb friction) [FEM support]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("base at y = 0: contact mu = 0.4 (one-sided: stops the approach, Coulomb friction) [FEM support]"), std::string::npos) << r.out;
   // Free sides: no wall, the runout area 3 model widths (13.5 m) beyond each.
   EXPECT_NE(r.out.find("left wall at x = -13.5: none (free face) [FEM side without support]"), std::string::npos) << r.out;
   const auto report = nlohmann::json::parse(slurp(dir / "deck/report.json"));
@@ -375,7 +375,7 @@ TEST(Fem2mpmRegression, LayeredSlopeKeepsItsSupportsThroughTheChain) {
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("boundary: right wall at x = 20: roller (x-velocity 0) [FEM support]; FEM support line x = 20, roller, y 0 to 5"),
             std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("boundary: base at y = 0: friction mu = 0.4"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("boundary: base at y = 0: contact mu = 0.4"), std::string::npos) << r.out;
   const auto report = nlohmann::json::parse(slurp(deck / "report.json"));
   ASSERT_EQ(report["boundaries"].size(), 3u);
   EXPECT_EQ(report["boundaries"][1]["fem_line"]["nodes"].size(), 6u);  // x = 20, y = 0 .. 5

@@ -229,7 +229,7 @@ TEST(DeckBoundaries, GridAlignedToSupportLines) {
   const auto choices = bridge::apply_supports(b, {}, deck);
   EXPECT_EQ(deck.left, bridge::Wall::Roller);
   EXPECT_EQ(deck.right, bridge::Wall::Roller);
-  EXPECT_EQ(deck.base, bridge::Base::Friction);
+  EXPECT_EQ(deck.base, bridge::Base::Contact);
   const auto d = bridge::build_deck(st, {}, deck);
   EXPECT_CLOSE(d.grid.x0, 0, 0, 0);
   EXPECT_CLOSE(d.grid.x0 + d.grid.nx * d.grid.h, 5.2, 1e-12, 1e-12);

@@ -42,6 +42,7 @@ TEST(MpmDeck, GimpGridMatchesCbGeoReferenceDeck) {
   o.dt = 1e-4;
   o.nsteps = 5001;
   o.base_friction = 0.5;
+  o.base = bridge::Base::Friction;  // CB-Geo's frictional base, as the reference deck
   const auto d = bridge::build_deck(column_state(), {}, o);
   EXPECT_EQ(d.grid.nx, 60);
   EXPECT_EQ(d.grid.ny, 20);
@@ -85,6 +86,21 @@ TEST(MpmDeck, GimpGridMatchesCbGeoReferenceDeck) {
   for (const auto& [key, value] : deck["analysis"].items())
     EXPECT_TRUE(ref_json["analysis"].contains(key) || key == "transfer") << key;
   for (const auto& [key, value] : deck["mesh"].items()) EXPECT_TRUE(ref_json["mesh"].contains(key)) << key;
+}
+
+// The default base, a one-sided frictional contact: the friction constraint on the base set without a
+// normal velocity constraint (mpm reads that as a contact that stops the approach and never pulls).
+TEST(MpmDeck, DefaultBaseIsAOneSidedFrictionalContact) {
+  bridge::DeckOptions o;
+  o.base_friction = 0.45;
+  const auto deck = nlohmann::json::parse(bridge::build_deck(column_state(), {}, o).mpm_json);
+  const auto& bc = deck["mesh"]["boundary_conditions"];
+  for (const auto& v : bc["velocity_constraints"]) EXPECT_FALSE(v["nset_id"] == 1) << v;
+  ASSERT_EQ(bc["friction_constraints"].size(), 1u);
+  EXPECT_EQ(bc["friction_constraints"][0]["nset_id"], 1);
+  EXPECT_EQ(bc["friction_constraints"][0]["dir"], 1);
+  EXPECT_EQ(bc["friction_constraints"][0]["sign_n"], -1);
+  EXPECT_EQ(bc["friction_constraints"][0]["friction"], 0.45);
 }
 
 // --base-y: the base node set is every node at or below the FEM base, so the grid may extend one cell
