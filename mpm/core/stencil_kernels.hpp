@@ -42,7 +42,7 @@ struct StencilWeights {
 };
 
 /// p2g of mass and momentum (Sulsky et al. 1994, eqs. 14-15): m N into slot 0, the momentum
-/// `momentum.xy(a, b, N, wx_a, wy_b)` (velocity_transfer.hpp MomentumContribution) into slots 1-2.
+/// `momentum.xy(a, b, N)` (velocity_transfer.hpp MomentumContribution) into slots 1-2.
 template <int W, class Momentum>
 inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, const StencilWeights<W>& w, double m,
                                   const Momentum& momentum) {
@@ -51,7 +51,7 @@ inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, cons
     for (int a = 0; a < W; ++a, gn += 5) {
       const double N = w.N(a, b);
       gn[0] += m * N;
-      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, N, w.wx[a], w.wy[b]));
+      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, N));
     }
   }
 }
@@ -63,7 +63,7 @@ inline void scatter_momentum(double* band_row, std::size_t row_stride, const Ste
   for (int b = 0; b < W; ++b, band_row += row_stride) {
     double* gn = band_row;
     for (int a = 0; a < W; ++a, gn += 5)
-      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, w.N(a, b), w.wx[a], w.wy[b]));
+      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, w.N(a, b)));
   }
 }
 

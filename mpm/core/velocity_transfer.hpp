@@ -137,30 +137,41 @@ inline void affine_matrix_at(LinearShape, const double* /*B*/, const double* C, 
 
 /// What one particle adds to the momentum of node (a, b) of its stencil (weight N = wx_a wy_b):
 /// m_p N v_p, and with APIC (Affine) also m_p B_p (ax_a wy_b, wx_a ay_b) = m_p N B_p D_p^-1 (x_i - x_p).
-/// Built once per particle per p2g (and per MUSL remap) from its affine weights at its current position.
-/// The x and y components go together in one Double2 (lanes.hpp), each lane the component's sum
-///   x: m vx N + (m Bxx ax_a) wy_b + (m Bxy ay_b) wx_a,   y: m vy N + (m Byx ax_a) wy_b + (m Byy ay_b) wx_a.
+/// Built once per particle per p2g (and per MUSL remap) from its weights and affine weights at its
+/// current position. The x and y components go together in one Double2 (lanes.hpp). FLIP / PIC: m v N.
+/// APIC, factored by stencil column (the terms that share wy_b first), per lane
+///   x: (m vx wx_a + m Bxx ax_a) wy_b + (m Bxy ay_b) wx_a,   y: (m vy wx_a + m Byx ax_a) wy_b + (m Byy ay_b) wx_a,
+/// two multiplies and one add per node on the column and row terms formed once per particle (the
+/// unfactored m v N + (m B ax_a) wy_b + (m B ay_b) wx_a takes three and two; the two forms differ by
+/// round-off only: 1e-14 relative on the paper's column after 600 steps, docs/study/transfer_comparison.md).
 template <class Shape, bool Affine>
 struct MomentumContribution {
   static constexpr int W = Shape::kWidth;
   Double2 mv = splat2(0.0);
-  /// m_p B_p times the per-axis affine weights (affine_weights): (xx ax_a, yx ax_a), (xy ay_b, yy ay_b)
-  Double2 b_ax[W] = {}, b_ay[W] = {};
+  /// APIC per stencil column a: m v_p wx_a + m B_p (ax_a, 0)^T, i.e. (m vx wx_a + m Bxx ax_a, m vy wx_a + m Byx ax_a)
+  Double2 column[W] = {};
+  /// APIC per stencil row b: m B_p (0, ay_b)^T = (m Bxy ay_b, m Byy ay_b)
+  Double2 row[W] = {};
+  /// The axis weights in both lanes, (wx_a, wx_a) and (wy_b, wy_b)
+  Double2 wx[W] = {}, wy[W] = {};
 
-  /// `B` the particle's matrix (xx xy yx yy) and `a` its affine weights ax[W], ay[W] (affine_weights),
-  /// both read only when Affine.
-  MomentumContribution(double m, double vx, double vy, const double* B, const double* a) : mv{m * vx, m * vy} {
+  /// `B` the particle's matrix (xx xy yx yy), `a` its affine weights ax[W], ay[W] (affine_weights) and
+  /// `wk` its weights block (wx[W], wy[W], ...); all three read only when Affine.
+  MomentumContribution(double m, double vx, double vy, const double* B, const double* a, const double* wk)
+      : mv{m * vx, m * vy} {
     if constexpr (Affine) {
       const Double2 mb_x{m * B[0], m * B[2]}, mb_y{m * B[1], m * B[3]};
       for (int k = 0; k < W; ++k) {
-        b_ax[k] = mb_x * a[k];
-        b_ay[k] = mb_y * a[W + k];
+        wx[k] = splat2(wk[k]);
+        wy[k] = splat2(wk[W + k]);
+        column[k] = mv * wx[k] + mb_x * a[k];
+        row[k] = mb_y * a[W + k];
       }
     }
   }
-  /// Node (a, b) with weight N = wx_a wy_b (wx_a, wy_b the axis weights).
-  Double2 xy(int a, int b, double N, double wx_a, double wy_b) const {
-    if constexpr (Affine) return mv * N + b_ax[a] * wy_b + b_ay[b] * wx_a;
+  /// Node (a, b) with weight N = wx_a wy_b.
+  Double2 xy(int a, int b, double N) const {
+    if constexpr (Affine) return column[a] * wy[b] + row[b] * wx[a];
     return mv * N;
   }
 };
