@@ -488,7 +488,9 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
     const double m = cur_.mass[p];
     double* band_row = g + local_[k];
     if (mass_momentum) {
-      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p],
+      const double* B = &cur_.affine[4 * p];  // xx xy yx yy
+      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], Double2{B[0], B[2]},
+                                                         Double2{B[1], B[3]},
                                                          Affine ? &affine_weights_[2 * W * k] : nullptr, wk);
       scatter_mass_momentum(band_row, row_stride, w, m, momentum);
     }
@@ -637,7 +639,8 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
       if constexpr (Affine)
         affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_, cells_x_ - 1,
                          cells_y_ - 1, grid_.hx, grid_.hy, B_old);
-      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B_old,
+      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, Double2{B_old[0], B_old[2]},
+                                                         Double2{B_old[1], B_old[3]},
                                                          Affine ? &affine_weights_[2 * W * k] : nullptr, wk);
       scatter_momentum(g + local_[k], row_stride, w, momentum);
     }

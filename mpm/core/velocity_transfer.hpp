@@ -155,12 +155,13 @@ struct MomentumContribution {
   /// The axis weights in both lanes, (wx_a, wx_a) and (wy_b, wy_b)
   Double2 wx[W] = {}, wy[W] = {};
 
-  /// `B` the particle's matrix (xx xy yx yy), `a` its affine weights ax[W], ay[W] (affine_weights) and
-  /// `wk` its weights block (wx[W], wy[W], ...); all three read only when Affine.
-  MomentumContribution(double m, double vx, double vy, const double* B, const double* a, const double* wk)
+  /// `b_x` = (Bxx, Byx) and `b_y` = (Bxy, Byy) the columns of the particle's matrix B_p, `a` its affine
+  /// weights ax[W], ay[W] (affine_weights) and `wk` its weights block (wx[W], wy[W], ...); all read only
+  /// when Affine.
+  MomentumContribution(double m, double vx, double vy, Double2 b_x, Double2 b_y, const double* a, const double* wk)
       : mv{m * vx, m * vy} {
     if constexpr (Affine) {
-      const Double2 mb_x{m * B[0], m * B[2]}, mb_y{m * B[1], m * B[3]};
+      const Double2 mb_x = m * b_x, mb_y = m * b_y;
       for (int k = 0; k < W; ++k) {
         wx[k] = splat2(wk[k]);
         wy[k] = splat2(wk[W + k]);
