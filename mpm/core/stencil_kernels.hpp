@@ -123,27 +123,37 @@ struct GridSums {
   VelocityGradient L;
 };
 
-/// `dxs`, `dys`: APIC only, node minus particle per stencil column / row (m).
+/// `dxs`, `dys`: APIC only, node minus particle per stencil column / row (m). APIC sums N v_i per
+/// stencil row and per column, one add each per node: v = sum_b row_b, b_dy = sum_b dy_b row_b,
+/// b_dx = sum_a dx_a column_a (the node-by-node sums up to round-off; FLIP keeps them node by node).
 template <int W, bool Affine>
 inline GridSums gather_updated(const double* updated, std::size_t first, std::size_t row_nodes,
                                const StencilWeights<W>& w, const double* dxs, const double* dys, bool gradient) {
   GridSums s;
+  Double2 column[W] = {};  // APIC: sum_b N v_ab per column a
   for (int b = 0; b < W; ++b, first += row_nodes) {
     const double* u = updated + 4 * first;
+    Double2 row = splat2(0.0);  // APIC: sum_a N v_ab
     for (int a = 0; a < W; ++a, u += 4) {
       const double N = w.N(a, b);
       const Double2 v = load2(u);
       const Double2 Nv = N * v;
-      s.v += Nv;
       if constexpr (Affine) {
-        s.b_dx += Nv * dxs[a];
-        s.b_dy += Nv * dys[b];
+        row += Nv;
+        column[a] += Nv;
       } else {
+        s.v += Nv;
         s.a += N * load2(u + 2);
       }
       if (gradient) s.L.add(v, w.dwx[a] * w.wy[b], w.wx[a] * w.dwy[b]);
     }
+    if constexpr (Affine) {
+      s.v += row;
+      s.b_dy += row * dys[b];
+    }
   }
+  if constexpr (Affine)
+    for (int a = 0; a < W; ++a) s.b_dx += column[a] * dxs[a];
   return s;
 }
 
