@@ -8,7 +8,9 @@
 // and y components of each nodal vector go through one Double2 (lanes.hpp: one SSE2 instruction for
 // both). Every lane computes the scalar expression of the component, in the same order, and each node's
 // sums are accumulated in the same particle order as before: the results are the scalar loops' bit for
-// bit (checked by `mpm_core_benchmark --checksum` and the regression tests).
+// bit (checked by `mpm_core_benchmark --checksum` and the regression tests). APIC alone sums in a
+// factored order (g2p by stencil row and column, gather_updated; its momentum by column,
+// MomentumContribution), fewer operations per node and equal to the node-by-node sums up to round-off.
 //
 // Band layout (engine.hpp): 5 values per node (m, px, py, fx, fy), rows `row_stride` values apart.
 #include <cstddef>
