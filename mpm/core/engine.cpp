@@ -220,7 +220,10 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   base_.resize(n);
   weights_.resize(n * 4 * static_cast<std::size_t>(width));
   dstrain_.resize(3 * n);
-  if (transfer_.affine()) stencil_offset_.resize(2 * n);
+  if (transfer_.affine()) {
+    stencil_offset_.resize(2 * n);
+    affine_weights_.resize(n * 2 * static_cast<std::size_t>(width));
+  }
   order_.reserve(n);
   sorted_.resize(n);
   bucket_.resize(static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
@@ -487,19 +490,21 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
                      cells_x_ - 1, cells_y_ - 1, ihx, ihy, bi, bj, wk);
       base_[k] = bi + bj * nx_;
       local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
-      if (!stencil_offset_.empty()) {
-        stencil_offset_[2 * k] = grid_.x0 + bi * grid_.hx - cur_.x[p];
-        stencil_offset_[2 * k + 1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
+      if constexpr (Affine) {  // APIC: the first node's offset and the affine weights, for this step's phases
+        double* offset = &stencil_offset_[2 * k];
+        offset[0] = grid_.x0 + bi * grid_.hx - cur_.x[p];
+        offset[1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
+        affine_weights(Shape{}, wk, offset[0], offset[1], grid_.hx, grid_.hy, &affine_weights_[2 * W * k]);
       }
     }
     const StencilWeights<W> w(wk);
     const double m = cur_.mass[p];
     double* band_row = g + local_[k];
     if (mass_momentum) {
-      const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
-      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], &cur_.affine[4 * p], wk,
-                                                         Affine ? offset[0] : 0.0, Affine ? offset[1] : 0.0,
-                                                         grid_.hx, grid_.hy);
+      const double* B = &cur_.affine[4 * p];  // xx xy yx yy
+      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], Double2{B[0], B[2]},
+                                                         Double2{B[1], B[3]},
+                                                         Affine ? &affine_weights_[2 * W * k] : nullptr, wk);
       scatter_mass_momentum(band_row, row_stride, w, m, momentum);
     }
     if (forces) {
@@ -615,7 +620,8 @@ void Engine::report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t
 /// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
 /// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
 /// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass (APIC: the particle's
-/// affine field, MomentumContribution at its old position, where B_p was just formed).
+/// affine field, MomentumContribution at its old position, where B_p was just formed, with the affine
+/// weights p2g formed there).
 template <class Shape, bool Affine>
 void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   constexpr int W = Shape::kWidth;
@@ -642,8 +648,8 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
                                                     strain_increments || kBilinearAffine);
     if (strain_increments) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
     const double vgx = sums.v[0], vgy = sums.v[1];
-    const double vx = transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
-    const double vy = transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
+    const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
+    const double vy = Affine ? vgy : transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
     const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
     nxt_.vx[k] = vx;
     nxt_.vy[k] = vy;
@@ -659,8 +665,9 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
       if constexpr (Affine)
         affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_, cells_x_ - 1,
                          cells_y_ - 1, grid_.hx, grid_.hy, B_old);
-      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, B_old, wk, Affine ? offset[0] : 0.0,
-                                                         Affine ? offset[1] : 0.0, grid_.hx, grid_.hy);
+      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, Double2{B_old[0], B_old[2]},
+                                                         Double2{B_old[1], B_old[3]},
+                                                         Affine ? &affine_weights_[2 * W * k] : nullptr, wk);
       scatter_momentum(g + local_[k], row_stride, w, momentum);
     }
     nxt_.x[k] = x;

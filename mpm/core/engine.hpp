@@ -173,6 +173,7 @@ class Engine {
   std::vector<double> weights_;           ///< per iteration index: wx, wy, dwx/h, dwy/h (4 * width)
   std::vector<double> dstrain_;           ///< per iteration index: 3 (scratch for the stress update)
   std::vector<double> stencil_offset_;    ///< APIC, per iteration index: first stencil node - particle (x, y), m
+  std::vector<double> affine_weights_;    ///< APIC, per iteration index: ax, ay (2 * width; p2g's, reread by the remap)
   std::vector<std::size_t> chunk_;        ///< chunks_ + 1 boundaries (iteration indices), at cell boundaries
   std::size_t chunks_ = 0;
   static constexpr std::size_t kChunkParticles = 2048;  ///< target chunk size

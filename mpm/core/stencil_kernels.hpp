@@ -8,7 +8,9 @@
 // and y components of each nodal vector go through one Double2 (lanes.hpp: one SSE2 instruction for
 // both). Every lane computes the scalar expression of the component, in the same order, and each node's
 // sums are accumulated in the same particle order as before: the results are the scalar loops' bit for
-// bit (checked by `mpm_core_benchmark --checksum` and the regression tests).
+// bit (checked by `mpm_core_benchmark --checksum` and the regression tests). APIC alone sums in a
+// factored order (g2p by stencil row and column, gather_updated; its momentum by column,
+// MomentumContribution), fewer operations per node and equal to the node-by-node sums up to round-off.
 //
 // Band layout (engine.hpp): 5 values per node (m, px, py, fx, fy), rows `row_stride` values apart.
 #include <cstddef>
@@ -42,7 +44,7 @@ struct StencilWeights {
 };
 
 /// p2g of mass and momentum (Sulsky et al. 1994, eqs. 14-15): m N into slot 0, the momentum
-/// `momentum.xy(a, b, N, wx_a, wy_b)` (velocity_transfer.hpp MomentumContribution) into slots 1-2.
+/// `momentum.xy(a, b, N)` (velocity_transfer.hpp MomentumContribution) into slots 1-2.
 template <int W, class Momentum>
 inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, const StencilWeights<W>& w, double m,
                                   const Momentum& momentum) {
@@ -51,7 +53,7 @@ inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, cons
     for (int a = 0; a < W; ++a, gn += 5) {
       const double N = w.N(a, b);
       gn[0] += m * N;
-      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, N, w.wx[a], w.wy[b]));
+      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, N));
     }
   }
 }
@@ -63,7 +65,7 @@ inline void scatter_momentum(double* band_row, std::size_t row_stride, const Ste
   for (int b = 0; b < W; ++b, band_row += row_stride) {
     double* gn = band_row;
     for (int a = 0; a < W; ++a, gn += 5)
-      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, w.N(a, b), w.wx[a], w.wy[b]));
+      store2(gn + 1, load2(gn + 1) + momentum.xy(a, b, w.N(a, b)));
   }
 }
 
@@ -123,27 +125,37 @@ struct GridSums {
   VelocityGradient L;
 };
 
-/// `dxs`, `dys`: APIC only, node minus particle per stencil column / row (m).
+/// `dxs`, `dys`: APIC only, node minus particle per stencil column / row (m). APIC sums N v_i per
+/// stencil row and per column, one add each per node: v = sum_b row_b, b_dy = sum_b dy_b row_b,
+/// b_dx = sum_a dx_a column_a (the node-by-node sums up to round-off; FLIP keeps them node by node).
 template <int W, bool Affine>
 inline GridSums gather_updated(const double* updated, std::size_t first, std::size_t row_nodes,
                                const StencilWeights<W>& w, const double* dxs, const double* dys, bool gradient) {
   GridSums s;
+  Double2 column[W] = {};  // APIC: sum_b N v_ab per column a
   for (int b = 0; b < W; ++b, first += row_nodes) {
     const double* u = updated + 4 * first;
+    Double2 row = splat2(0.0);  // APIC: sum_a N v_ab
     for (int a = 0; a < W; ++a, u += 4) {
       const double N = w.N(a, b);
       const Double2 v = load2(u);
       const Double2 Nv = N * v;
-      s.v += Nv;
       if constexpr (Affine) {
-        s.b_dx += Nv * dxs[a];
-        s.b_dy += Nv * dys[b];
+        row += Nv;
+        column[a] += Nv;
       } else {
+        s.v += Nv;
         s.a += N * load2(u + 2);
       }
       if (gradient) s.L.add(v, w.dwx[a] * w.wy[b], w.wx[a] * w.dwy[b]);
     }
+    if constexpr (Affine) {
+      s.v += row;
+      s.b_dy += row * dys[b];
+    }
   }
+  if constexpr (Affine)
+    for (int a = 0; a < W; ++a) s.b_dx += column[a] * dxs[a];
   return s;
 }
 

@@ -19,7 +19,7 @@
 // Tensor-product weights w_ip = wx_a(x_p) wy_b(y_p) with those two properties per axis make D_p
 // diagonal: D_xx = sum_a wx_a (x_a - x_p)^2 (the off-diagonal sum_a wx_a (x_a - x_p) sum_b wy_b (y_b - y_p)
 // is zero), so w_ip D_p^-1 (x_i - x_p) = (ax_a wy_b, wx_a ay_b) with the per-axis affine weights
-// ax_a = wx_a (x_a - x_p) / D_xx (affine_axis_weights below):
+// ax_a = wx_a (x_a - x_p) / D_xx (affine_weights below):
 //   - uGIMP (Bardenhagen & Kober 2004): D_xx >= lp h / 2 > 0 (its minimum, with the particle on a node),
 //     so the division is safe; D_xx is NOT the constant h^2/4 of quadratic B-splines.
 //   - bilinear: ax_a = dwx_a / dx exactly (1D, nodes at 0 and h, particle at x: D = x (h - x), and
@@ -57,28 +57,40 @@ struct VelocityTransfer {
   }
 };
 
-/// APIC per-axis affine weights a[k] = w[k] d_k / D with d_k = d0 + k h the signed distance node minus
-/// particle (m) and D = sum_k w[k] d_k^2 (the axis's entry of D_p). uGIMP: from the weights.
-inline void affine_axis_weights(GimpShape, const double* w, const double* /*dw*/, double d0, double h, double* a) {
+/// APIC's per-axis affine weights of one particle, `a` = ax[W] then ay[W], ax_k = wx_k d_k / D_xx with
+/// d_k = ox + k hx the signed distance node minus particle (m) and D_xx = sum_k wx_k d_k^2 (the axis's
+/// entry of D_p; y alike). uGIMP: from the weights, both axes at once in the lanes of one Double2 (each
+/// lane the scalar sums, in the same order). `wk` = the weights block (wx, wy, dwx, dwy; W each),
+/// (ox, oy) = first stencil node minus particle. p2g forms them once per particle per step and MUSL's
+/// remap, at the same position, reads them back (Engine::affine_weights_).
+inline void affine_weights(GimpShape, const double* wk, double ox, double oy, double hx, double hy, double* a) {
   constexpr int W = GimpShape::kWidth;
-  double D = 0.0;
+  const Double2 o{ox, oy}, h{hx, hy};
+  Double2 wd[W], d[W];
+  Double2 D = splat2(0.0);
   for (int k = 0; k < W; ++k) {
-    const double d = d0 + k * h;
-    D += w[k] * d * d;
+    d[k] = o + static_cast<double>(k) * h;
+    wd[k] = Double2{wk[k], wk[W + k]} * d[k];
+    D += wd[k] * d[k];
   }
-  const double inv_D = 1.0 / D;
-  for (int k = 0; k < W; ++k) a[k] = w[k] * (d0 + k * h) * inv_D;
+  const Double2 inv_D = splat2(1.0) / D;
+  for (int k = 0; k < W; ++k) {
+    const Double2 ak = wd[k] * inv_D;
+    a[k] = ak[0];
+    a[W + k] = ak[1];
+  }
 }
 
-/// Bilinear: the gradient dw (per metre), equal to w d / D wherever D > 0 (see the file comment).
-inline void affine_axis_weights(LinearShape, const double* /*w*/, const double* dw, double /*d0*/, double /*h*/,
-                                double* a) {
-  for (int k = 0; k < LinearShape::kWidth; ++k) a[k] = dw[k];
+/// Bilinear: the gradients dw (per metre), equal to w d / D wherever D > 0 (see the file comment).
+inline void affine_weights(LinearShape, const double* wk, double /*ox*/, double /*oy*/, double /*hx*/, double /*hy*/,
+                           double* a) {
+  constexpr int W = LinearShape::kWidth;
+  for (int k = 0; k < 2 * W; ++k) a[k] = wk[2 * W + k];
 }
 
 /// One axis's entry of APIC's D_p / h^2 = sum_a w_a (s_a - s)^2 for a particle at lattice coordinate s
 /// (units of h; uGIMP half-size l in units of h; `max_cell` the last cell of the axis), evaluated afresh
-/// (p2g computes it from the stored weights: affine_axis_weights). Bilinear: t (1 - t), t the position
+/// (p2g computes it from the stored weights: affine_weights). Bilinear: t (1 - t), t the position
 /// in the cell LinearShape::eval picks.
 inline double apic_inertia(LinearShape, double s, double /*l*/, int max_cell) {
   int base = 0;
@@ -125,34 +137,42 @@ inline void affine_matrix_at(LinearShape, const double* /*B*/, const double* C, 
 
 /// What one particle adds to the momentum of node (a, b) of its stencil (weight N = wx_a wy_b):
 /// m_p N v_p, and with APIC (Affine) also m_p B_p (ax_a wy_b, wx_a ay_b) = m_p N B_p D_p^-1 (x_i - x_p).
-/// Built once per particle per p2g (and per MUSL remap) from its weights at its current position.
-/// The x and y components go together in one Double2 (lanes.hpp), each lane the component's sum
-///   x: m vx N + (m Bxx ax_a) wy_b + (m Bxy ay_b) wx_a,   y: m vy N + (m Byx ax_a) wy_b + (m Byy ay_b) wx_a.
+/// Built once per particle per p2g (and per MUSL remap) from its weights and affine weights at its
+/// current position. The x and y components go together in one Double2 (lanes.hpp). FLIP / PIC: m v N.
+/// APIC, factored by stencil column (the terms that share wy_b first), per lane
+///   x: (m vx wx_a + m Bxx ax_a) wy_b + (m Bxy ay_b) wx_a,   y: (m vy wx_a + m Byx ax_a) wy_b + (m Byy ay_b) wx_a,
+/// two multiplies and one add per node on the column and row terms formed once per particle (the
+/// unfactored m v N + (m B ax_a) wy_b + (m B ay_b) wx_a takes three and two; the two forms differ by
+/// round-off only: 1e-14 relative on the paper's column after 600 steps, docs/study/transfer_comparison.md).
 template <class Shape, bool Affine>
 struct MomentumContribution {
   static constexpr int W = Shape::kWidth;
   Double2 mv = splat2(0.0);
-  /// m_p B_p times the per-axis affine weights (affine_axis_weights): (xx ax_a, yx ax_a), (xy ay_b, yy ay_b)
-  Double2 b_ax[W] = {}, b_ay[W] = {};
+  /// APIC per stencil column a: m v_p wx_a + m B_p (ax_a, 0)^T, i.e. (m vx wx_a + m Bxx ax_a, m vy wx_a + m Byx ax_a)
+  Double2 column[W] = {};
+  /// APIC per stencil row b: m B_p (0, ay_b)^T = (m Bxy ay_b, m Byy ay_b)
+  Double2 row[W] = {};
+  /// The axis weights in both lanes, (wx_a, wx_a) and (wy_b, wy_b)
+  Double2 wx[W] = {}, wy[W] = {};
 
-  /// `w` = the particle's stored weights (wx, wy, dwx, dwy; W each, gradients per metre), `B` its
-  /// matrix (read only when Affine), (ox, oy) = first stencil node minus particle, m.
-  MomentumContribution(double m, double vx, double vy, const double* B, const double* w, double ox, double oy,
-                       double hx, double hy)
+  /// `b_x` = (Bxx, Byx) and `b_y` = (Bxy, Byy) the columns of the particle's matrix B_p, `a` its affine
+  /// weights ax[W], ay[W] (affine_weights) and `wk` its weights block (wx[W], wy[W], ...); all read only
+  /// when Affine.
+  MomentumContribution(double m, double vx, double vy, Double2 b_x, Double2 b_y, const double* a, const double* wk)
       : mv{m * vx, m * vy} {
     if constexpr (Affine) {
-      double ax[W], ay[W];
-      affine_axis_weights(Shape{}, w, w + 2 * W, ox, hx, ax);
-      affine_axis_weights(Shape{}, w + W, w + 3 * W, oy, hy, ay);
+      const Double2 mb_x = m * b_x, mb_y = m * b_y;
       for (int k = 0; k < W; ++k) {
-        b_ax[k] = Double2{m * B[0] * ax[k], m * B[2] * ax[k]};
-        b_ay[k] = Double2{m * B[1] * ay[k], m * B[3] * ay[k]};
+        wx[k] = splat2(wk[k]);
+        wy[k] = splat2(wk[W + k]);
+        column[k] = mv * wx[k] + mb_x * a[k];
+        row[k] = mb_y * a[W + k];
       }
     }
   }
-  /// Node (a, b) with weight N = wx_a wy_b (wx_a, wy_b the axis weights).
-  Double2 xy(int a, int b, double N, double wx_a, double wy_b) const {
-    if constexpr (Affine) return mv * N + b_ax[a] * wy_b + b_ay[b] * wx_a;
+  /// Node (a, b) with weight N = wx_a wy_b.
+  Double2 xy(int a, int b, double N) const {
+    if constexpr (Affine) return column[a] * wy[b] + row[b] * wx[a];
     return mv * N;
   }
 };
