@@ -4,8 +4,9 @@
 // friction). Prints the block's mean displacement and velocity at t_end, their errors, and the step
 // of a numerical failure (runaway velocity) if one happens.
 //
-//   mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu]]]]]]]]]
-//   defaults:                    2      1e6 0.25 2   0.4  0.3  30             0.3
+//   mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base]]]]]]]]]]
+//   defaults:                    2      1e6 0.25 2   0.4  0.3  30             0.3 friction
+// base "contact": the friction constraint alone (a one-sided frictional contact, fem2mpm's default base).
 // `only` keeps the rows whose label ("ED2Q4/MUSL/FLIP") contains it ("" for all).
 //
 //   mpm_sliding_block_benchmark --flutter [E]
@@ -103,7 +104,8 @@ int flutter_table(double E) {
 
 int main(int argc, char** argv) {
   if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-    std::puts("usage: mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu]]]]]]]]]\n"
+    std::puts("usage: mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base]]]]]]]]]]\n"
+              "       base: friction (CB-Geo's bilateral base, default) or contact (one-sided frictional contact)\n"
               "       mpm_sliding_block_benchmark --flutter [E]");
     return 0;
   }
@@ -119,11 +121,18 @@ int main(int argc, char** argv) {
   spec.angle_deg = arg(7, 30.0);
   const std::string only = argc > 8 ? argv[8] : "";
   spec.nu = arg(9, 0.3);
+  const std::string base = argc > 10 ? argv[10] : "friction";
+  if (base != "friction" && base != "contact") {
+    std::fprintf(stderr, "mpm_sliding_block_benchmark: error: base: expected friction or contact, got '%s'\n", base.c_str());
+    return 2;
+  }
+  spec.one_sided = base == "contact";
   const double acc = coulomb(spec);
   const double d_exact = 0.5 * acc * t_end * t_end, v_exact = acc * t_end;
   spec.cells_x = static_cast<int>(std::ceil((spec.x0 + spec.width + d_exact + 2.0) / spec.h));
-  std::printf("block %g x %g m, E %g Pa, nu %g, h %g m, %d x %d particles per cell, CFL %g, mu %g, angle %g deg\n",
-              spec.width, spec.height, spec.E, spec.nu, spec.h, spec.ppd, spec.ppd, cfl, spec.mu, spec.angle_deg);
+  std::printf("block %g x %g m, E %g Pa, nu %g, h %g m, %d x %d particles per cell, CFL %g, mu %g, angle %g deg, base %s\n",
+              spec.width, spec.height, spec.E, spec.nu, spec.h, spec.ppd, spec.ppd, cfl, spec.mu, spec.angle_deg,
+              base.c_str());
   std::printf("analytic at t = %g s: d = %.4f m, v = %.4f m/s\n", t_end, d_exact, v_exact);
   std::printf("%-6s %-5s %-10s %10s %8s %10s %8s %8s\n", "cells", "scheme", "transfer", "d (m)", "d err%",
               "v (m/s)", "v err%", "wall s");
