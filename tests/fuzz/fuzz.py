@@ -349,8 +349,20 @@ def copy_case(name: str, folder: Path):
             shutil.copy(p, folder / p.name)
 
 
+def add_loads(deck: dict):
+    """CB-Geo's loads besides gravity, so that mutations reach their reader and the engine's load paths: a
+    Sin and a Linear math function, nodal forces and particle tractions on every node and particle."""
+    deck["math_functions"] = [{"id": 0, "type": "Sin", "a": 5.0, "x0": 0.0, "xrange": [0.0, 10.0]},
+                              {"id": 1, "type": "Linear", "xvalues": [0.0, 1.0], "fxvalues": [0.0, 1.0]}]
+    loads = deck.setdefault("external_loading_conditions", {"gravity": [0.0, -9.81]})
+    loads["concentrated_nodal_forces"] = [{"nset_id": -1, "dir": 1, "force": -1.0, "math_function_id": 1}]
+    loads["particle_surface_traction"] = [{"pset_id": -1, "dir": 0, "traction": 10.0, "math_function_id": 0}]
+
+
 def prepare_deck(folder: Path, rng, mutate_json: bool):
     deck = json.loads((folder / "mpm.json").read_text())
+    if rng.random() < 0.3:
+        add_loads(deck)
     limit_steps(deck)
     text = json.dumps(deck, indent=1)
     if mutate_json:
