@@ -276,6 +276,9 @@ FEM2MPM_OPTIONS = ["--time", "--row", "--nodes", "--elements", "--E", "--nu", "-
 def case_fem2mpm(rng, folder: Path, bins: Path, seeds, timeout):
     files = {"model.json": BRIDGE_CASE / "model.json", "disp.out": BRIDGE_CASE / "disp.out",
              "stress.out": BRIDGE_CASE / "stress.out"}
+    with_loads = rng.random() < 0.3  # the displacement file's layout read as nodal loads (--loads)
+    if with_loads:
+        files["loads.out"] = BRIDGE_CASE / "disp.out"
     target = rng.choice(list(files) + ["options", "options"])
     for name, src in files.items():
         data = src.read_bytes()
@@ -284,6 +287,8 @@ def case_fem2mpm(rng, folder: Path, bins: Path, seeds, timeout):
         (folder / name).write_bytes(data)
     args = ["--model", "model.json", "--disp", "disp.out", "--stress", "stress.out", "--units", "kN", "--out", "deck",
             "--quiet", "--nsteps", "3"]
+    if with_loads:
+        args += ["--loads", "loads.out"]
     if rng.random() < 0.5:
         args += ["--material-type", "mohr-coulomb", "--phi", "30", "--cohesion", "5"]
     if target == "options":
