@@ -100,11 +100,11 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   }
   if (!(dt_ > 0) || !std::isfinite(dt_)) throw common::InputError("analysis.dt", "expected a time step > 0");
 
-  // Small-mass cutoff (where particles read unweighted gradients of the updated grid velocity: USL's
-  // strain increment, APIC's C_p on bilinear cells): a fraction of a full node of the lightest material.
+  // Small-mass cutoff (on bilinear cells, where particles read unweighted gradients of the updated grid
+  // velocity: USL's strain increment, APIC's C_p): a fraction of a full node of the lightest material.
   double lightest = std::numeric_limits<double>::infinity();
   for (const auto& spec : deck.materials) lightest = std::min(lightest, spec.density);
-  const bool reads_updated_gradients = scheme_ == io::Scheme::USL || (transfer_.affine() && !gimp);
+  const bool reads_updated_gradients = !gimp && (scheme_ == io::Scheme::USL || transfer_.affine());
   small_mass_ = reads_updated_gradients ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
 
   // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).

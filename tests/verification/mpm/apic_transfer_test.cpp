@@ -96,14 +96,14 @@ TEST(ApicTransfer, SpinningDiskKeepsItsAngularMomentum) {
       const auto flip = spin(type, scheme, Transfer::FLIP);
       std::printf("cells %d scheme %d: dL/L0 after 1 s: APIC %.2e, PIC %.2e, FLIP %.2e\n", static_cast<int>(type),
                   static_cast<int>(scheme), apic[0], pic[0], flip[0]);
-      // USL drops the internal force at nodes lighter than 2 % of a full node (the small-mass cutoff,
-      // mpm/core/engine.hpp small_mass_), which the disk's rim touches: the grid update itself then no
-      // longer conserves angular momentum exactly (measured 1.0e-4 after 1 s), whatever the transfer.
+      // USL on bilinear cells drops the internal force at nodes lighter than 2 % of a full node (the
+      // small-mass cutoff, mpm/core/engine.hpp small_mass_), which the disk's rim touches: the grid update
+      // itself then no longer conserves angular momentum exactly, whatever the transfer (uGIMP: no cutoff).
       // Bilinear APIC, measured after 1 s: 3.0e-3 (USF), 2.4e-3 (MUSL), 1.5e-2 (USL, with the cutoff);
       // FLIP 6.6e-2 to 7.9e-2.
-      const bool cutoff = scheme == Scheme::USL, bilinear = type == CellType::Linear4;
-      const double bound = bilinear ? (cutoff ? 2e-2 : 5e-3) : (cutoff ? 1e-3 : 1e-12);  // uGIMP USF/MUSL: round-off
-      const double flip_worse = bilinear ? (cutoff ? 3.0 : 10.0) : (cutoff ? 1e2 : 1e3);
+      const bool bilinear = type == CellType::Linear4, cutoff = scheme == Scheme::USL && bilinear;
+      const double bound = bilinear ? (cutoff ? 2e-2 : 5e-3) : 1e-12;  // uGIMP: round-off
+      const double flip_worse = bilinear ? (cutoff ? 3.0 : 10.0) : 1e3;
       EXPECT_LT(std::abs(apic[0]), bound);
       EXPECT_LT(pic[0], -0.5);  // PIC's transfers dissipate the rotation
       EXPECT_GT(std::abs(flip[0]), flip_worse * std::abs(apic[0]) + 1e-12);

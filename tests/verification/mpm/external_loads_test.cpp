@@ -62,11 +62,8 @@ TEST_P(ExternalLoads, NodalForcesGiveTheirImpulseExactly) {
     sim.step();
   }
   const Totals t = totals(sim.snapshot());
-  // USL drops the internal force of nodes below its small-mass cutoff (mpm/core/engine.hpp small_mass_):
-  // there the internal forces no longer cancel exactly (measured 2e-7 of the impulse; 1e-11 for USF, MUSL).
-  const double rel = scheme == Scheme::USL ? 1e-6 : 1e-9;
-  EXPECT_CLOSE(t.py, impulse_y, 1e-12, rel);
-  EXPECT_CLOSE(t.px, Fx * steps * deck.analysis.dt, 1e-12, rel);
+  EXPECT_CLOSE(t.py, impulse_y, 1e-12, 1e-9);  // measured 1e-11
+  EXPECT_CLOSE(t.px, Fx * steps * deck.analysis.dt, 1e-12, 1e-9);
 }
 
 TEST_P(ExternalLoads, ParticleTractionIsTheTractionTimesTheFace) {
