@@ -173,4 +173,9 @@ std::vector<std::vector<double>> read_columns(const std::filesystem::path& file,
   return rows;
 }
 
+int axis_column(const std::string& shown, double value, std::size_t entry) {
+  if (value != 0 && value != 1) throw common::InputError(shown, "entry " + std::to_string(entry) + ": dir must be 0 or 1");
+  return static_cast<int>(value);
+}
+
 }  // namespace mpm::io

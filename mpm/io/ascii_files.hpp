@@ -44,4 +44,7 @@ std::vector<std::array<double, 6>> read_particle_stresses(const std::filesystem:
 std::vector<std::vector<double>> read_columns(const std::filesystem::path& file, const std::string& shown,
                                               std::size_t columns);
 
+/// A direction column of such a file (`shown`, row `entry`): 0 (x) or 1 (y); throws InputError otherwise.
+int axis_column(const std::string& shown, double value, std::size_t entry);
+
 }  // namespace mpm::io

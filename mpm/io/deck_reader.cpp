@@ -239,11 +239,6 @@ int file_node(const Lattice& lattice, const std::string& shown, double value, in
 void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const EntitySets& sets,
                               const std::map<std::string, std::vector<int>>& named, Deck& deck, const fs::path& dir) {
   auto node_set = [&](StrictObject& c) { return nodes_of_set(c, lattice, sets, named); };
-  auto direction = [](StrictObject& c) {
-    const long long dir = c.integer("dir");
-    if (dir != 0 && dir != 1) c.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
-    return static_cast<int>(dir);
-  };
   if (const json* list = bc.optional("velocity_constraints")) {
     if (!list->is_array()) bc.fail("velocity_constraints", "expected an array");
     for (std::size_t k = 0; k < list->size(); ++k) {
@@ -254,16 +249,14 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         for (std::size_t r = 0; r < rows.size(); ++r) {
           VelocityConstraint vc;
           vc.nodes = {file_node(lattice, f, rows[r][0], static_cast<int>(r))};
-          if (rows[r][1] != 0 && rows[r][1] != 1)
-            throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
-          vc.dir = static_cast<int>(rows[r][1]);
+          vc.dir = axis_column(f, rows[r][1], r);
           vc.velocity = rows[r][2];
           deck.velocity_constraints.push_back(vc);
         }
       } else {
         VelocityConstraint vc;
         vc.nodes = node_set(c);
-        vc.dir = direction(c);
+        vc.dir = read_axis(c);
         vc.velocity = c.number("velocity");
         deck.velocity_constraints.push_back(std::move(vc));
       }
@@ -284,9 +277,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         for (std::size_t r = 0; r < rows.size(); ++r) {
           FrictionConstraint fc;
           fc.nodes = {file_node(lattice, f, rows[r][0], static_cast<int>(r))};
-          if (rows[r][1] != 0 && rows[r][1] != 1)
-            throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
-          fc.dir = static_cast<int>(rows[r][1]);
+          fc.dir = axis_column(f, rows[r][1], r);
           check(rows[r][2], rows[r][3], [&](const std::string& w) { throw common::InputError(f, "entry " + std::to_string(r) + ": " + w); });
           fc.sign_n = static_cast<int>(rows[r][2]);
           fc.friction = rows[r][3];
@@ -295,7 +286,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
       } else {
         FrictionConstraint fc;
         fc.nodes = node_set(c);
-        fc.dir = direction(c);
+        fc.dir = read_axis(c);
         const long long sign = c.integer("sign_n");
         if (sign != 1 && sign != -1) c.fail("sign_n", "expected -1 or 1, got " + std::to_string(sign));
         fc.sign_n = static_cast<int>(sign);
@@ -421,9 +412,7 @@ void check_no_duplicates(const std::vector<ParticleRecord>& ps, const std::strin
 /// external_loading_conditions.base_acceleration: {"dir": 0 or 1, "acceleration": m/s2, "math_function_id"}.
 BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned, MathFunction>& functions) {
   BaseAcceleration out;
-  const long long dir = b.integer("dir");
-  if (dir != 0 && dir != 1) b.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
-  out.dir = static_cast<int>(dir);
+  out.dir = read_axis(b);
   out.acceleration = b.number_in("acceleration", kFiniteRange);
   out.history = math_function_of(b, functions);
   b.finish();
@@ -446,8 +435,6 @@ void sort_by_id(Deck& deck) {
   for (std::size_t k : order) affine.push_back(deck.particle_affine[k]);
   deck.particle_affine = std::move(affine);
 }
-
-}  // namespace
 
 /// external_loading_conditions: gravity, CB-Geo's nodal forces and particle tractions (external_loads.hpp)
 /// and (extension) a base acceleration, with the math functions they name.
@@ -491,6 +478,8 @@ void read_loads(StrictObject& root, Deck& deck, const Lattice& lattice, const En
   deck.particle_tractions = read_particle_tractions(l, math_functions, load_sets);
   l.finish();
 }
+
+}  // namespace
 
 Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   const fs::path dir = working_dir;

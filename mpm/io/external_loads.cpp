@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "common/input_error.hpp"
 #include "mpm/io/ascii_files.hpp"
 #include "mpm/io/deck_rules.hpp"
 #include "mpm/io/json_keys.hpp"
@@ -12,12 +11,6 @@ namespace mpm::io {
 using nlohmann::json;
 
 namespace {
-
-int direction(StrictObject& entry) {
-  const long long dir = entry.integer("dir");
-  if (dir != 0 && dir != 1) entry.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
-  return static_cast<int>(dir);
-}
 
 /// f(t) of an entry: its math_function_id's function, or 1 without one (CB-Geo's scalar).
 MathFunction function_of(StrictObject& entry, const std::map<unsigned, MathFunction>& functions) {
@@ -47,12 +40,9 @@ std::vector<NodalForce> read_nodal_forces(StrictObject& loads, const std::map<un
       const std::string f = entry.string("file");
       const auto rows = read_columns(dir / f, f, 3);
       for (std::size_t r = 0; r < rows.size(); ++r) {
-        const int line = static_cast<int>(r);
-        if (rows[r][1] != 0 && rows[r][1] != 1)
-          throw common::InputError(f, "entry " + std::to_string(r) + ": dir must be 0 or 1");
         NodalForce nf;
-        nf.nodes = {sets.file_node(f, rows[r][0], line)};
-        nf.dir = static_cast<int>(rows[r][1]);
+        nf.nodes = {sets.file_node(f, rows[r][0], static_cast<int>(r))};
+        nf.dir = axis_column(f, rows[r][1], r);
         nf.force = rows[r][2];
         out.push_back(std::move(nf));
       }
@@ -60,7 +50,7 @@ std::vector<NodalForce> read_nodal_forces(StrictObject& loads, const std::map<un
     }
     NodalForce nf;
     nf.nodes = sets.nodes(entry);
-    nf.dir = direction(entry);
+    nf.dir = read_axis(entry);
     nf.force = entry.number_in("force", kFiniteRange);
     nf.function = function_of(entry, functions);
     out.push_back(std::move(nf));
@@ -75,7 +65,7 @@ std::vector<ParticleTraction> read_particle_tractions(StrictObject& loads,
   for_each_entry(loads, "particle_surface_traction", [&](StrictObject& entry) {
     ParticleTraction pt;
     pt.particles = sets.particles(entry);
-    pt.dir = direction(entry);
+    pt.dir = read_axis(entry);
     pt.traction = entry.number_in("traction", kFiniteRange);
     pt.function = function_of(entry, functions);
     out.push_back(std::move(pt));

@@ -110,4 +110,10 @@ void StrictObject::finish() const {
     if (!taken_.count(it.key())) fail(it.key(), "unsupported key");
 }
 
+int read_axis(StrictObject& entry) {
+  const long long dir = entry.integer("dir");
+  if (dir != 0 && dir != 1) entry.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
+  return static_cast<int>(dir);
+}
+
 }  // namespace mpm::io

@@ -58,4 +58,8 @@ class StrictObject {
 /// Short description of a JSON value's kind for messages ("a string", "an array", ...).
 std::string json_kind(const nlohmann::json& value);
 
+/// The deck's `dir` key of `entry` (a constraint, a load, the base acceleration): 0 (x) or 1 (y); fails
+/// naming the key otherwise.
+int read_axis(StrictObject& entry);
+
 }  // namespace mpm::io

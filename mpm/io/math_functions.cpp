@@ -37,9 +37,6 @@ std::vector<double> finite_numbers(StrictObject& f, const std::string& key) {
   }
   return out;
 }
-}  // namespace
-
-namespace {
 
 LinearFunction read_linear(StrictObject& f) {
   LinearFunction fn;
