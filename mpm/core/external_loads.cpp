@@ -8,12 +8,13 @@
 
 namespace mpm::core {
 
-ExternalLoads::ExternalLoads(const io::Deck& deck, std::size_t nodes)
-    : nodal_(deck.nodal_forces), tractions_(deck.particle_tractions) {
+ExternalLoads::ExternalLoads(const io::Deck& deck, std::size_t nodes) {
+  for (const auto& f : deck.nodal_forces) nodal_.push_back({f.force, f.function});
+  for (const auto& t : deck.particle_tractions) tractions_.push_back({t.traction, t.function});
   if (!nodal_.empty()) {
     node_slot_.assign(nodes, -1);
-    for (std::size_t e = 0; e < nodal_.size(); ++e) {
-      for (int n : nodal_[e].nodes) {
+    for (std::size_t e = 0; e < deck.nodal_forces.size(); ++e) {
+      for (int n : deck.nodal_forces[e].nodes) {
         if (n < 0 || static_cast<std::size_t>(n) >= nodes)
           throw common::InputError("concentrated_nodal_forces[" + std::to_string(e) + "]",
                                    "node " + std::to_string(n) + " is not in the mesh");
@@ -22,16 +23,16 @@ ExternalLoads::ExternalLoads(const io::Deck& deck, std::size_t nodes)
           s = static_cast<std::int32_t>(node_entries_.size());
           node_entries_.push_back({-1, -1});
         }
-        node_entries_[static_cast<std::size_t>(s)][static_cast<std::size_t>(nodal_[e].dir)] = static_cast<std::int32_t>(e);
+        node_entries_[static_cast<std::size_t>(s)][static_cast<std::size_t>(deck.nodal_forces[e].dir)] = static_cast<std::int32_t>(e);
       }
     }
   }
   // Each particle's pair of entries, then one slot per distinct pair.
   std::unordered_map<std::int64_t, Entries> entries_of_id;
-  for (std::size_t e = 0; e < tractions_.size(); ++e)
-    for (std::int64_t id : tractions_[e].particles) {
+  for (std::size_t e = 0; e < deck.particle_tractions.size(); ++e)
+    for (std::int64_t id : deck.particle_tractions[e].particles) {
       auto [it, fresh] = entries_of_id.try_emplace(id, Entries{-1, -1});
-      it->second[static_cast<std::size_t>(tractions_[e].dir)] = static_cast<std::int32_t>(e);
+      it->second[static_cast<std::size_t>(deck.particle_tractions[e].dir)] = static_cast<std::int32_t>(e);
     }
   std::map<Entries, std::int32_t> slot_of_pair;
   for (const auto& [id, pair] : entries_of_id) {
@@ -44,9 +45,8 @@ ExternalLoads::ExternalLoads(const io::Deck& deck, std::size_t nodes)
 }
 
 void ExternalLoads::set_time(double t) {
-  for (std::size_t e = 0; e < nodal_.size(); ++e) nodal_values_[e] = nodal_[e].force * nodal_[e].function.value(t);
-  for (std::size_t e = 0; e < tractions_.size(); ++e)
-    traction_values_[e] = tractions_[e].traction * tractions_[e].function.value(t);
+  for (std::size_t e = 0; e < nodal_.size(); ++e) nodal_values_[e] = nodal_[e].scale * nodal_[e].function.value(t);
+  for (std::size_t e = 0; e < tractions_.size(); ++e) traction_values_[e] = tractions_[e].scale * tractions_[e].function.value(t);
 }
 
 Vec2 ExternalLoads::traction_force(std::int32_t s, double volume, double initial_volume) const {

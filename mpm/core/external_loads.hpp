@@ -51,9 +51,13 @@ class ExternalLoads {
   static Vec2 value_of(const Entries& e, const std::vector<double>& values) {
     return Vec2(e[0] < 0 ? 0.0 : values[static_cast<std::size_t>(e[0])], e[1] < 0 ? 0.0 : values[static_cast<std::size_t>(e[1])]);
   }
-  std::vector<io::NodalForce> nodal_;
-  std::vector<io::ParticleTraction> tractions_;
-  std::vector<double> nodal_values_, traction_values_;  ///< per entry: force (traction) * f(t)
+  /// Per entry: its magnitude (force or traction) and math function, the value at the time set.
+  struct Scaled {
+    double scale;
+    io::MathFunction function;
+  };
+  std::vector<Scaled> nodal_, tractions_;
+  std::vector<double> nodal_values_, traction_values_;  ///< per entry: scale * f(t)
   std::vector<std::int32_t> node_slot_;                 ///< per node: index into node_entries_, -1 none
   std::vector<Entries> node_entries_;
   std::unordered_map<std::int64_t, std::int32_t> traction_slot_of_id_;
