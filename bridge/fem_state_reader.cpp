@@ -271,24 +271,19 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
       recorded[i] = 1;
     }
   }
-  if (!options.vel.empty()) {
-    const RecorderFile vel(options.vel);
-    check_node_width(vel, vel.rows().size() - 1);
-    const std::size_t vel_row = pick_row(vel, t, std::nullopt, out.notes);
-    const auto v = vel.values(vel_row);
+  // Another Node recorder of the same layout at the transfer time: per model node, times `scale`.
+  const auto nodal_field = [&](const std::filesystem::path& file, double scale) {
+    const RecorderFile f(file);
+    check_node_width(f, f.rows().size() - 1);
+    const auto v = f.values(pick_row(f, t, std::nullopt, out.notes));
+    std::vector<Vec2> field(nn, Vec2::Zero());
     for (std::size_t k = 0; k < node_tags.size(); ++k)
-      st.velocity[static_cast<std::size_t>(model.node_index(node_tags[k]))] = Vec2(v[2 * k], v[2 * k + 1]);
-  } else {
-    out.notes.push_back("no velocity file (--vel): the particles start at rest (zero velocity)");
-  }
-  if (!options.loads.empty()) {  // forces: kN -> N like the stresses
-    const RecorderFile loads(options.loads);
-    check_node_width(loads, loads.rows().size() - 1);
-    const auto f = loads.values(pick_row(loads, t, std::nullopt, out.notes));
-    st.load.assign(nn, Vec2::Zero());
-    for (std::size_t k = 0; k < node_tags.size(); ++k)
-      st.load[static_cast<std::size_t>(model.node_index(node_tags[k]))] = factor * Vec2(f[2 * k], f[2 * k + 1]);
-  }
+      field[static_cast<std::size_t>(model.node_index(node_tags[k]))] = scale * Vec2(v[2 * k], v[2 * k + 1]);
+    return field;
+  };
+  if (!options.vel.empty()) st.velocity = nodal_field(options.vel, 1.0);
+  else out.notes.push_back("no velocity file (--vel): the particles start at rest (zero velocity)");
+  if (!options.loads.empty()) st.load = nodal_field(options.loads, factor);  // forces: kN -> N like the stresses
 
   // --- materials (ids in name order) and elements
   std::map<std::string, unsigned> material_ids;

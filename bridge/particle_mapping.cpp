@@ -42,25 +42,27 @@ std::vector<std::size_t> particle_slots(const TransferState& state) {
   return slot;
 }
 
-ParticleList generate_particles(const TransferState& state,
-                                                        const std::vector<Stress6>& nodal_stress,
-                                                        const MappingOptions& options) {
-  const int n = options.particles_per_direction;
+std::vector<ParticlePoint> particle_points(int n) {
   const GaussRule rule = gauss_legendre(n);
-  const std::size_t per_element = static_cast<std::size_t>(n * n);
-  ParticleList out(state.elements.size() * per_element);  // not yet initialised: see the loop
-  const double nsize = 2.0 / n;
-  // Shape functions and weights at the n x n points, computed once.
-  struct Point { double xi, eta, w; std::array<double, 4> shape; };
-  std::vector<Point> points;
-  points.reserve(per_element);
+  std::vector<ParticlePoint> points;
+  points.reserve(static_cast<std::size_t>(n * n));
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const double xi = rule.points[static_cast<std::size_t>(i)], eta = rule.points[static_cast<std::size_t>(j)];
       points.push_back({xi, eta, rule.weights[static_cast<std::size_t>(i)] * rule.weights[static_cast<std::size_t>(j)],
                         shape_functions(xi, eta)});
     }
+  return points;
+}
 
+ParticleList generate_particles(const TransferState& state,
+                                                        const std::vector<Stress6>& nodal_stress,
+                                                        const MappingOptions& options) {
+  const int n = options.particles_per_direction;
+  const std::size_t per_element = static_cast<std::size_t>(n * n);
+  ParticleList out(state.elements.size() * per_element);  // not yet initialised: see the loop
+  const double nsize = 2.0 / n;
+  const std::vector<ParticlePoint> points = particle_points(n);  // computed once
   const std::vector<std::size_t> slot = particle_slots(state);
 
 #pragma omp parallel for schedule(static)
@@ -81,7 +83,7 @@ ParticleList generate_particles(const TransferState& state,
       v[a] = state.velocity[node];
     }
     for (std::size_t q = 0; q < per_element; ++q) {
-      const Point& pt = points[q];
+      const ParticlePoint& pt = points[q];
       const auto& N = pt.shape;
       // Value-initialisation zeroes the whole record, padding included (byte-reproducible files).
       mpm::io::ParticleRecord& r = *::new (static_cast<void*>(&out[first + q])) mpm::io::ParticleRecord{};

@@ -1,6 +1,7 @@
 #pragma once
 // Nodes -> material points (the paper, "Hybrid FEM-MPM", Figure 3b): n x n particles per element at
 // the Gauss-Legendre points, values from the element's bilinear shape functions.
+#include <array>
 #include <memory>
 #include <new>
 #include <utility>
@@ -60,6 +61,15 @@ unsigned mohr_coulomb_state(const MpmMaterial& m, const Stress6& stress, double*
 /// element order), so that the deck's one particle file per material (CB-Geo's generator per
 /// material_id) numbers the particles as the HDF5 file does.
 std::vector<std::size_t> particle_slots(const TransferState& state);
+
+/// An element's particle points in their numbering order q = j n + i (eta-major): natural coordinates of
+/// the n x n Gauss-Legendre points, their weight w_i w_j and the element's shape functions there. Element e's
+/// particle q has id particle_slots(state)[e] * n^2 + q (generate_particles).
+struct ParticlePoint {
+  double xi, eta, w;
+  std::array<double, 4> shape;
+};
+std::vector<ParticlePoint> particle_points(int n);
 
 /// Generates the particles: n x n Gauss-Legendre points in (xi, eta) per element, eta-major, grouped by
 /// material (the materials in state order, each material's elements in element order: id =
