@@ -98,21 +98,46 @@ struct GimpShape {
     w = select(outside, zero, select(edge, w_edge, select(hat, w_hat, w_core)));
     dw = select(outside, zero, select(edge, dw_edge, select(hat, dw_hat, dw_core)));
   }
-  /// Both axes of a particle (see LinearShape::eval_xy), the same values as eval() per axis.
+  /// node2() for the stencil's middle node (the particle's nearest: |r| <= 1/2 <= 1 - l): the core or
+  /// the hat piece, node()'s expressions, without the two pieces it cannot reach.
+  static void middle_node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) {
+    const Double2 one = splat2(1.0);
+    const Double2 a = abs2(r);
+    const Mask2 hat = a > l;
+    w = select(hat, one - a, one - 0.5 * (r * r + l * l) * il);
+    dw = select(hat, -select(r < splat2(0.0), splat2(-1.0), one), -r * il);
+  }
+  /// node2() for an outer node of the stencil at distance a = |r| in (1/2, 3/2] (a >= l: never the
+  /// core piece) on the side of sign `sgn` (+1: the node before the particle, -1: the one after).
+  static void outer_node2(Double2 a, double sgn, Double2 l, Double2 il, Double2& w, Double2& dw) {
+    const Double2 one = splat2(1.0), zero = splat2(0.0);
+    const Double2 d = one + l - a;
+    const Double2 w_edge = 0.25 * d * d * il, dw_edge = -0.5 * sgn * d * il;
+    const Mask2 outside = a >= one + l, edge = a > one - l;
+    w = select(outside, zero, select(edge, w_edge, one - a));
+    dw = select(outside, zero, select(edge, dw_edge, splat2(-sgn)));
+  }
+  /// Both axes of a particle (see LinearShape::eval_xy), the same values as eval() per axis: each node
+  /// takes only the pieces its position allows (the middle node core or hat, the outer ones hat, edge
+  /// or outside), node()'s expressions. The one exception is a particle of l = 1/2 (nsize = 2) within
+  /// an ulp of a cell's mid-line, where floor(s + 1/2) rounds across it: eval() then meets the
+  /// neighbouring piece, whose value at the shared boundary differs by an ulp.
   static void eval_xy(double sx, double sy, double lx, double ly, int /*max_i*/, int /*max_j*/, double ihx,
                       double ihy, int& bi, int& bj, double* wk) {
     bi = static_cast<int>(std::floor(sx + 0.5)) - 1;
     bj = static_cast<int>(std::floor(sy + 0.5)) - 1;
     const Double2 s{sx, sy}, l{lx, ly}, base{static_cast<double>(bi), static_cast<double>(bj)};
     const Double2 il = 1.0 / l, ih{ihx, ihy};
+    Double2 w[kWidth], dw[kWidth];
+    outer_node2(s - base, 1.0, l, il, w[0], dw[0]);             // r in [1/2, 3/2)
+    middle_node2(s - (base + 1.0), l, il, w[1], dw[1]);         // r in [-1/2, 1/2)
+    outer_node2(-(s - (base + 2.0)), -1.0, l, il, w[2], dw[2]);  // r in [-3/2, -1/2)
     for (int a = 0; a < kWidth; ++a) {
-      Double2 w, dw;
-      node2(s - (base + static_cast<double>(a)), l, il, w, dw);
-      dw *= ih;
-      wk[a] = w[0];
-      wk[kWidth + a] = w[1];
-      wk[2 * kWidth + a] = dw[0];
-      wk[3 * kWidth + a] = dw[1];
+      dw[a] *= ih;
+      wk[a] = w[a][0];
+      wk[kWidth + a] = w[a][1];
+      wk[2 * kWidth + a] = dw[a][0];
+      wk[3 * kWidth + a] = dw[a][1];
     }
   }
 };

@@ -8,9 +8,11 @@
 // and y components of each nodal vector go through one Double2 (lanes.hpp: one SSE2 instruction for
 // both). Every lane computes the scalar expression of the component, in the same order, and each node's
 // sums are accumulated in the same particle order as before: the results are the scalar loops' bit for
-// bit (checked by `mpm_core_benchmark --checksum` and the regression tests). APIC alone sums in a
-// factored order (g2p by stencil row and column, gather_updated; its momentum by column,
-// MomentumContribution), fewer operations per node and equal to the node-by-node sums up to round-off.
+// bit. The sums over the stencil use the tensor-product structure N_ab = wx_a wy_b: what does not
+// depend on the row is formed once per stencil column (the forces), and gathers sum over a row first and
+// weight the row sum by wy_b (or dwy_b) once; APIC sums by stencil row and column (gather_updated) and
+// forms its momentum per column (MomentumContribution). Fewer operations per node, equal to the
+// node-by-node sums up to round-off.
 //
 // Band layout (engine.hpp): 5 values per node (m, px, py, fx, fy), rows `row_stride` values apart.
 #include <cstddef>
@@ -57,7 +59,6 @@ inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, cons
     }
   }
 }
-
 /// Only the momentum (MUSL's remap of the updated particle momentum, Sulsky, Zhou & Schreyer 1995, eq. 20).
 template <int W, class Momentum>
 inline void scatter_momentum(double* band_row, std::size_t row_stride, const StencilWeights<W>& w,
@@ -72,17 +73,22 @@ inline void scatter_momentum(double* band_row, std::size_t row_stride, const Ste
 /// p2g of the force (Sulsky et al. 1994, eq. 16): m N g - V grad N . sigma into slots 3-4, with
 /// mg = (m gx, m gy) and the stress sxx, syy, sxy of volume V:
 ///   fx += m gx N - V (dN/dx sxx + dN/dy sxy),  fy += m gy N - V (dN/dx sxy + dN/dy syy).
+/// With N = wx_a wy_b, dN/dx = dwx_a wy_b, dN/dy = wx_a dwy_b it is summed as
+///   f_ab = wy_b (mg wx_a - V dwx_a s_dx) - dwy_b (V wx_a s_dy),
+/// the two brackets formed once per stencil column.
 template <int W>
 inline void scatter_forces(double* band_row, std::size_t row_stride, const StencilWeights<W>& w, Double2 mg, double V,
                            double sxx, double syy, double sxy) {
   const Double2 s_dx{sxx, sxy}, s_dy{sxy, syy};  // what dN/dx and dN/dy multiply, per component
+  Double2 with_wy[W], with_dwy[W];                // per column a: what wy_b and dwy_b multiply
+  for (int a = 0; a < W; ++a) {
+    with_wy[a] = mg * w.wx[a] - (V * w.dwx[a]) * s_dx;
+    with_dwy[a] = (V * w.wx[a]) * s_dy;
+  }
   for (int b = 0; b < W; ++b, band_row += row_stride) {
     double* gn = band_row;
-    for (int a = 0; a < W; ++a, gn += 5) {
-      const double N = w.N(a, b);
-      const double dx = w.dwx[a] * w.wy[b], dy = w.wx[a] * w.dwy[b];
-      store2(gn + 3, load2(gn + 3) + (mg * N - V * (dx * s_dx + dy * s_dy)));
-    }
+    for (int a = 0; a < W; ++a, gn += 5)
+      store2(gn + 3, load2(gn + 3) + (w.wy[b] * with_wy[a] - w.dwy[b] * with_dwy[a]));
   }
 }
 
@@ -90,9 +96,10 @@ inline void scatter_forces(double* band_row, std::size_t row_stride, const Stenc
 /// column pairs of L = [[dvx/dx, dvx/dy], [dvy/dx, dvy/dy]]: d_dx = (dvx/dx, dvy/dx), d_dy = (dvx/dy, dvy/dy).
 struct VelocityGradient {
   Double2 d_dx = splat2(0.0), d_dy = splat2(0.0);
-  void add(Double2 v, double dx, double dy) {
-    d_dx += dx * v;
-    d_dy += dy * v;
+  /// One stencil row b: wx_v = sum_a wx_a v_ab and dwx_v = sum_a dwx_a v_ab, with the row's wy_b, dwy_b.
+  void add_row(Double2 wx_v, Double2 dwx_v, double wy, double dwy) {
+    d_dx += wy * dwx_v;
+    d_dy += dwy * wx_v;
   }
   /// The strain increment (dexx, deyy, dgxy) = dt (dvx/dx, dvy/dy, dvx/dy + dvy/dx) (CB-Geo compute_strain_rate).
   void strain_increment(double dt, double* de) const {
@@ -104,13 +111,20 @@ struct VelocityGradient {
 
 /// The velocity gradient of `field` (2 values per node, nodes `row_nodes` apart per row) at the particle
 /// whose stencil starts at node `first`; `stride` values per node (2 for velocity_, 4 for updated_).
+/// Summed by stencil row: d_dx = sum_b wy_b (sum_a dwx_a v_ab), d_dy = sum_b dwy_b (sum_a wx_a v_ab).
 template <int W>
 inline VelocityGradient gather_velocity_gradient(const double* field, std::size_t stride, std::size_t first,
                                                  std::size_t row_nodes, const StencilWeights<W>& w) {
   VelocityGradient L;
   for (int b = 0; b < W; ++b, first += row_nodes) {
     const double* v = field + stride * first;
-    for (int a = 0; a < W; ++a, v += stride) L.add(load2(v), w.dwx[a] * w.wy[b], w.wx[a] * w.dwy[b]);
+    Double2 wx_v = splat2(0.0), dwx_v = splat2(0.0);
+    for (int a = 0; a < W; ++a, v += stride) {
+      const Double2 va = load2(v);
+      wx_v += w.wx[a] * va;
+      dwx_v += w.dwx[a] * va;
+    }
+    L.add_row(wx_v, dwx_v, w.wy[b], w.dwy[b]);
   }
   return L;
 }
@@ -125,9 +139,11 @@ struct GridSums {
   VelocityGradient L;
 };
 
-/// `dxs`, `dys`: APIC only, node minus particle per stencil column / row (m). APIC sums N v_i per
-/// stencil row and per column, one add each per node: v = sum_b row_b, b_dy = sum_b dy_b row_b,
-/// b_dx = sum_a dx_a column_a (the node-by-node sums up to round-off; FLIP keeps them node by node).
+/// The sums are taken per stencil row b, then weighted by the row's wy_b (and dwy_b): FLIP
+/// v = sum_b wy_b (sum_a wx_a v_ab), a alike, and the gradient as gather_velocity_gradient. `dxs`,
+/// `dys`: APIC only, node minus particle per stencil column / row (m). APIC sums N v_i per stencil row
+/// and per column, one add each per node: v = sum_b row_b, b_dy = sum_b dy_b row_b, b_dx = sum_a dx_a
+/// column_a.
 template <int W, bool Affine>
 inline GridSums gather_updated(const double* updated, std::size_t first, std::size_t row_nodes,
                                const StencilWeights<W>& w, const double* dxs, const double* dys, bool gradient) {
@@ -136,23 +152,28 @@ inline GridSums gather_updated(const double* updated, std::size_t first, std::si
   for (int b = 0; b < W; ++b, first += row_nodes) {
     const double* u = updated + 4 * first;
     Double2 row = splat2(0.0);  // APIC: sum_a N v_ab
+    Double2 wx_v = splat2(0.0), wx_a = splat2(0.0), dwx_v = splat2(0.0);  // sum_a of wx_a v, wx_a a, dwx_a v
     for (int a = 0; a < W; ++a, u += 4) {
-      const double N = w.N(a, b);
       const Double2 v = load2(u);
-      const Double2 Nv = N * v;
       if constexpr (Affine) {
+        const Double2 Nv = w.N(a, b) * v;
         row += Nv;
         column[a] += Nv;
+        if (gradient) wx_v += w.wx[a] * v;
       } else {
-        s.v += Nv;
-        s.a += N * load2(u + 2);
+        wx_v += w.wx[a] * v;
+        wx_a += w.wx[a] * load2(u + 2);
       }
-      if (gradient) s.L.add(v, w.dwx[a] * w.wy[b], w.wx[a] * w.dwy[b]);
+      if (gradient) dwx_v += w.dwx[a] * v;
     }
     if constexpr (Affine) {
       s.v += row;
       s.b_dy += row * dys[b];
+    } else {
+      s.v += w.wy[b] * wx_v;
+      s.a += w.wy[b] * wx_a;
     }
+    if (gradient) s.L.add_row(wx_v, dwx_v, w.wy[b], w.dwy[b]);
   }
   if constexpr (Affine)
     for (int a = 0; a < W; ++a) s.b_dx += column[a] * dxs[a];
