@@ -874,9 +874,9 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     const std::uint32_t p = order_[k];
     const double* de = &dstrain_[3 * k];
     double* s = &nxt_.stress[4 * k];  // updated in place (a whole-block copy: no partial-store stalls)
-    std::copy_n(&cur_.stress[4 * p], 4, s);
+    copy_doubles<4>(&cur_.stress[4 * p], s);
     double* sv = &nxt_.svars[k * kStateVariables];  // updated in place, as the stress
-    std::copy_n(&cur_.svars[p * kStateVariables], kStateVariables, sv);
+    copy_doubles<kStateVariables>(&cur_.svars[p * kStateVariables], sv);
     dispatch(cur_.material[p], s, de, sv);
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);

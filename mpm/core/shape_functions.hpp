@@ -28,7 +28,9 @@ struct LinearShape {
   /// s = (x - x0) / h in lattice units; `max_cell` = last cell index on this axis (cells_on_axis - 1);
   /// `l` unused. Writes the first node index `base` and the weights w and gradients dw (per unit of h).
   static void eval(double s, double /*l*/, int max_cell, int& base, double w[kWidth], double dw[kWidth]) {
-    int c = static_cast<int>(std::floor(s));
+    // Truncation, then the clamp to cell 0: the same as floor + clamp, without the floor (a call or a
+    // dozen instructions on the SSE2 baseline).
+    int c = static_cast<int>(s);
     c = c < 0 ? 0 : (c > max_cell ? max_cell : c);
     const double t = s - c;
     base = c;
@@ -53,6 +55,10 @@ struct LinearShape {
 /// uGIMP (Bardenhagen & Kober 2004): `kWidth` = 3 nodes per axis (the nearest node and its neighbours).
 struct GimpShape {
   static constexpr int kWidth = 3;
+  /// The node nearest to s, floor(s + 1/2), by truncation (floor is a call or a dozen instructions on
+  /// the SSE2 baseline): s + 1/2 > 0 for every particle on the lattice, whose halo ring keeps
+  /// s >= 1 - l >= 1/2 (Engine checks the ring and removes particles that leave the region).
+  static int nearest_node(double s) { return static_cast<int>(s + 0.5); }
   /// One node's weight and gradient for the signed distance r (units of h), half-size l (units of h)
   /// and its inverse il = 1 / l (no division in the hot loop).
   static void node(double r, double l, double il, double& w, double& dw) {
@@ -77,8 +83,7 @@ struct GimpShape {
   /// s = (x - x0) / h in lattice units; l = lp / h in (0, 1/2]. `max_cell` unused (the lattice must
   /// hold one node beyond the particle's nearest nodes: CB-Geo's halo ring).
   static void eval(double s, double l, int /*max_cell*/, int& base, double w[kWidth], double dw[kWidth]) {
-    const int n = static_cast<int>(std::floor(s + 0.5));
-    base = n - 1;
+    base = nearest_node(s) - 1;
     const double il = 1.0 / l;
     for (int a = 0; a < kWidth; ++a) node(s - static_cast<double>(base + a), l, il, w[a], dw[a]);
   }
@@ -124,8 +129,8 @@ struct GimpShape {
   /// neighbouring piece, whose value at the shared boundary differs by an ulp.
   static void eval_xy(double sx, double sy, double lx, double ly, int /*max_i*/, int /*max_j*/, double ihx,
                       double ihy, int& bi, int& bj, double* wk) {
-    bi = static_cast<int>(std::floor(sx + 0.5)) - 1;
-    bj = static_cast<int>(std::floor(sy + 0.5)) - 1;
+    bi = nearest_node(sx) - 1;
+    bj = nearest_node(sy) - 1;
     const Double2 s{sx, sy}, l{lx, ly}, base{static_cast<double>(bi), static_cast<double>(bj)};
     const Double2 il = 1.0 / l, ih{ihx, ihy};
     Double2 w[kWidth], dw[kWidth];

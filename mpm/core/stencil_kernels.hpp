@@ -30,6 +30,15 @@ inline Double2 load2(const double* p) {
 }
 inline void store2(double* p, Double2 v) { std::memcpy(p, &v, sizeof v); }
 
+/// Copies N doubles as register moves: std::copy_n of a short block becomes a memcpy call (about 30
+/// instructions for a particle's stress or state variables).
+template <std::size_t N>
+inline void copy_doubles(const double* from, double* to) {
+  std::size_t i = 0;
+  for (; i + 2 <= N; i += 2) store2(to + i, load2(from + i));
+  if constexpr (N % 2 == 1) to[N - 1] = from[N - 1];
+}
+
 /// A particle's weights block [wx, wy, dwx, dwy] (W each; gradients per metre) in registers.
 template <int W>
 struct StencilWeights {
