@@ -258,8 +258,10 @@ std::int64_t Engine::cell_key(double x, double y) const {
 
 // ---------------------------------------------------------------------------------------------------
 // Sorting: order_ = live particles by (cell, id). A counting sort by cell of the previous order, then
-// an insertion sort by id inside each cell (nearly sorted already). The result depends only on the
-// particle state, so a resumed run iterates in the same order as the uninterrupted one.
+// an insertion sort by id inside each cell (nearly sorted already); after a step in which few
+// particles changed cell, a merge of those few into the rest (resort_particles). The result depends
+// only on the particle state, so a resumed run iterates in the same order as the uninterrupted one.
+// Serial: it is the one phase of a step the threads do not share.
 // ---------------------------------------------------------------------------------------------------
 void Engine::sort_particles() {
   std::fill(bucket_.begin(), bucket_.end(), 0u);
@@ -269,18 +271,7 @@ void Engine::sort_particles() {
     const std::int64_t key = cur_.key[order_[k]];
     if (key != kRemoved) ++bucket_[static_cast<std::size_t>(key) + 1];
   }
-  int cmin_i = cells_x_, cmax_i = -1, cmin_j = cells_y_, cmax_j = -1;
-  for (std::size_t c = 0; c + 1 < bucket_.size(); ++c) {
-    if (bucket_[c + 1] > 0) {
-      const int i = static_cast<int>(c % static_cast<std::size_t>(cells_x_));
-      const int j = static_cast<int>(c / static_cast<std::size_t>(cells_x_));
-      cmin_i = std::min(cmin_i, i);
-      cmax_i = std::max(cmax_i, i);
-      cmin_j = std::min(cmin_j, j);
-      cmax_j = std::max(cmax_j, j);
-    }
-    bucket_[c + 1] += bucket_[c];
-  }
+  for (std::size_t c = 0; c + 1 < bucket_.size(); ++c) bucket_[c + 1] += bucket_[c];
   const std::size_t n = bucket_.back();
   for (std::size_t k = 0; k < n_old; ++k) {
     const std::uint32_t p = order_[k];
@@ -304,7 +295,57 @@ void Engine::sort_particles() {
     start = end;
   }
   order_.assign(sorted_.begin(), sorted_.begin() + static_cast<std::ptrdiff_t>(n));
+  cut_chunks();
+}
 
+/// After a step, when few particles changed cell: the particles that kept theirs are still in (cell,
+/// id) order along the previous order, so the new order is their sequence merged with the few others
+/// sorted, in one pass instead of the counting sort. (cell, id) is unique, so the order is the one
+/// sort_particles() gives. `previous` maps an iteration index of the step to the particle's storage
+/// index in nxt_ (the previous buffer), where its old cell key is.
+void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
+  const std::size_t n_old = previous.size();
+  const auto kept_cell = [&](std::size_t k) { return cur_.key[k] == nxt_.key[previous[k]]; };
+  movers_.clear();
+  for (std::size_t k = 0; k < n_old; ++k)
+    if (cur_.key[k] != kRemoved && !kept_cell(k)) movers_.push_back(static_cast<std::uint32_t>(k));
+  order_.resize(n_old);
+  if (movers_.size() > n_old / 16) {  // many: the counting sort is cheaper than sorting them
+    for (std::size_t k = 0; k < n_old; ++k) order_[k] = static_cast<std::uint32_t>(k);
+    sort_particles();
+    return;
+  }
+  const auto before = [&](std::uint32_t a, std::uint32_t b) {
+    return cur_.key[a] != cur_.key[b] ? cur_.key[a] < cur_.key[b] : cur_.id[a] < cur_.id[b];
+  };
+  std::sort(movers_.begin(), movers_.end(), before);
+  std::size_t n = 0, m = 0;
+  for (std::size_t k = 0; k < n_old; ++k) {
+    if (cur_.key[k] == kRemoved || !kept_cell(k)) continue;
+    const auto p = static_cast<std::uint32_t>(k);
+    while (m < movers_.size() && before(movers_[m], p)) order_[n++] = movers_[m++];
+    order_[n++] = p;
+  }
+  while (m < movers_.size()) order_[n++] = movers_[m++];
+  order_.resize(n);
+  cut_chunks();
+}
+
+/// The active node box and the chunks of the sorted particles (order_).
+void Engine::cut_chunks() {
+  const std::size_t n = order_.size();
+  int cmin_i = cells_x_, cmax_i = -1, cmin_j = cells_y_, cmax_j = -1;
+  std::int64_t previous_key = kRemoved;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::int64_t key = cur_.key[order_[k]];
+    if (key == previous_key) continue;
+    previous_key = key;
+    const int i = static_cast<int>(key % cells_x_), j = static_cast<int>(key / cells_x_);
+    cmin_i = std::min(cmin_i, i);
+    cmax_i = std::max(cmax_i, i);
+    cmin_j = std::min(cmin_j, j);
+    cmax_j = std::max(cmax_j, j);
+  }
   // Active node box: every node a particle's stencil can reach (cell - 1 .. cell + 2).
   if (n == 0) {
     bi0_ = bi1_ = bj0_ = bj1_ = 0;
@@ -367,8 +408,8 @@ void Engine::step() {
   throw_first_error();
   std::swap(cur_, nxt_);
   // The next buffer was written in iteration order: storage index k is the particle of iteration k.
-  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
-  sort_particles();
+  std::swap(order_, previous_order_);
+  resort_particles(previous_order_);
   ++step_index_;
 }
 

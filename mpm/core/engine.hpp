@@ -125,6 +125,8 @@ class Engine {
 
   // --- serial parts ---
   void sort_particles();  ///< order_ from cur_.key: by cell, then id; drops removed particles; chunks
+  void resort_particles(const std::vector<std::uint32_t>& previous);  ///< the same after a step, by a merge
+  void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
   std::int64_t cell_key(double x, double y) const;
 
@@ -183,6 +185,8 @@ class Engine {
   static constexpr std::size_t kChunkParticles = 2048;  ///< target chunk size
   std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
   std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
+  std::vector<std::uint32_t> previous_order_;  ///< the step's order_, kept for resort_particles
+  std::vector<std::uint32_t> movers_;     ///< resort_particles: the particles that changed cell
 
   // materials and analysis
   std::vector<Material> materials_;
