@@ -99,6 +99,16 @@ Spectral decompose(const PlaneStrainStress& s) {
   return sp;
 }
 
+/// decompose()'s largest and smallest principal values (sorted[0], sorted[2]; the middle one is left 0),
+/// the same expressions without the directions and their divisions: what the elastic test reads.
+Eigen::Vector3d principal_extremes(const PlaneStrainStress& s) {
+  const double center = 0.5 * (s[0] + s[1]);
+  const double half = 0.5 * (s[0] - s[1]);
+  const double radius = std::sqrt(half * half + s[3] * s[3]);
+  const double a = center + radius, b = center - radius, z = s[2];
+  return {z >= a ? z : a, 0.0, z >= b ? b : z};
+}
+
 PlaneStrainStress recompose(const Spectral& sp, const Eigen::Vector3d& sorted) {
   Eigen::Vector3d abz;
   for (int i = 0; i < 3; ++i) abz[sp.slot[i]] = sorted[i];
@@ -298,10 +308,12 @@ namespace {
 MohrCoulombUpdate plastic_return(const PlaneStrainStress& trial, const Spectral& sp, const IsotropicElasticity& el,
                                  const Planes& planes, const CandidateSolve* solves) {
   const PrincipalResult pr = principal_return(planes, sp.sorted, el.shear_modulus, solves);
+  // ds from the stress in registers (reading up.stress back would wait on its partial stores).
+  const PlaneStrainStress stress = recompose(sp, pr.stress);
+  const Eigen::Vector4d ds = trial - stress;
   MohrCoulombUpdate up;
-  up.stress = recompose(sp, pr.stress);
+  up.stress = stress;
   up.region = pr.region;
-  const Eigen::Vector4d ds = trial - up.stress;
   const double p = (ds[0] + ds[1] + ds[2]) / 3.0;
   const double g2 = 2.0 * el.shear_modulus, k3 = 3.0 * el.bulk_modulus;
   up.plastic_strain_increment = {(ds[0] - p) / g2 + p / k3, (ds[1] - p) / g2 + p / k3, (ds[2] - p) / g2 + p / k3,
@@ -337,6 +349,16 @@ MohrCoulombReturnMap::MohrCoulombReturnMap(const IsotropicElasticity& el, const 
 
 const MohrCoulombSurface& MohrCoulombReturnMap::surface() const { return data_->surface; }
 const IsotropicElasticity& MohrCoulombReturnMap::elasticity() const { return data_->elasticity; }
+
+bool MohrCoulombReturnMap::admits(const PlaneStrainStress& trial) const {
+  const Data& d = *data_;
+  return inside(principal_extremes(trial), d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension);
+}
+
+MohrCoulombUpdate MohrCoulombReturnMap::apply_plastic(const PlaneStrainStress& trial) const {
+  const Data& d = *data_;
+  return plastic_return(trial, decompose(trial), d.elasticity, d.planes, d.solves.data());
+}
 
 MohrCoulombUpdate MohrCoulombReturnMap::apply(const PlaneStrainStress& trial) const {
   const Data& d = *data_;

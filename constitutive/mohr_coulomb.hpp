@@ -115,6 +115,11 @@ class MohrCoulombReturnMap {
   MohrCoulombReturnMap(const IsotropicElasticity& elasticity, const MohrCoulombSurface& surface);
   bool valid() const { return data_ != nullptr; }
   MohrCoulombUpdate apply(const PlaneStrainStress& trial_stress) const;
+  /// True when apply() would find the trial elastic (the same test, without the spectral directions):
+  /// the cheap first check of a stress update, where most points are elastic.
+  bool admits(const PlaneStrainStress& trial_stress) const;
+  /// apply() for a trial that admits() refused (the elastic test is not repeated).
+  MohrCoulombUpdate apply_plastic(const PlaneStrainStress& trial_stress) const;
   const MohrCoulombSurface& surface() const;
   const IsotropicElasticity& elasticity() const;
 

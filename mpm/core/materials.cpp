@@ -74,11 +74,16 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
   const auto has_angles_of = [&](const constitutive::MohrCoulombSurface& cached) {
     return strength.friction == cached.strength.friction && strength.dilation == cached.strength.dilation;
   };
+  Eigen::Map<Eigen::Vector4d> out(stress);
+  const constitutive::MohrCoulombReturnMap* map =
+      is_strength_of(peak_map) ? &peak_map : (is_strength_of(residual_map) ? &residual_map : nullptr);
+  if (map != nullptr && map->admits(trial)) {  // elastic: the trial stands, the state is unchanged
+    out = trial;
+    return;
+  }
   constitutive::MohrCoulombUpdate r;
-  if (is_strength_of(peak_map)) {
-    r = peak_map.apply(trial);
-  } else if (is_strength_of(residual_map)) {
-    r = residual_map.apply(trial);
+  if (map != nullptr) {
+    r = map->apply_plastic(trial);
   } else {
     constitutive::MohrCoulombSurface surface;
     if (has_angles_of(peak_surface)) {
@@ -91,7 +96,6 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
     surface.strength = strength;  // the trigonometry depends on the angles only
     r = constitutive::mohr_coulomb_return(trial, el, surface);
   }
-  Eigen::Map<Eigen::Vector4d> out(stress);
   out = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them
   // when the state is written out, not in the hot loop.

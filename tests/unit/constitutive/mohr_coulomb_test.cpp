@@ -280,7 +280,8 @@ TEST_P(MohrCoulombTangent, PrecomputedSurfaceGivesTheSameUpdateBitForBit) {
 
 // The return map (planes and active-set matrices formed once per surface) must return the same stress,
 // plastic strain and region as the plain return, bit for bit, in every region, and on a sweep of trials
-// around each case (which visits the neighbouring regions and the corners of the tension cutoff).
+// around each case (which visits the neighbouring regions and the corners of the tension cutoff); its
+// elastic test (admits) must say elastic exactly where the return does.
 TEST_P(MohrCoulombTangent, ReturnMapGivesTheSameReturnBitForBit) {
   const TangentCase& tc = GetParam();
   const constitutive::MohrCoulombSurface surface(tc.st);
@@ -289,6 +290,13 @@ TEST_P(MohrCoulombTangent, ReturnMapGivesTheSameReturnBitForBit) {
     const auto a = constitutive::mohr_coulomb_return(trial, kElastic, surface);
     const auto b = map.apply(trial);
     EXPECT_EQ(a.region, b.region);
+    // The elastic fast test agrees with the return, and the plastic entry with apply.
+    EXPECT_EQ(map.admits(trial), a.region == ReturnRegion::Elastic);
+    if (!map.admits(trial)) {
+      const auto c = map.apply_plastic(trial);
+      EXPECT_EQ(c.region, b.region);
+      for (int i = 0; i < 4; ++i) EXPECT_EQ(c.stress[i], b.stress[i]) << i;
+    }
     for (int i = 0; i < 4; ++i) {
       EXPECT_EQ(a.stress[i], b.stress[i]) << i;
       EXPECT_EQ(a.plastic_strain_increment[i], b.plastic_strain_increment[i]) << i;
