@@ -30,7 +30,9 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
     while (sim.step_index() < nsteps) {
       const long long step = sim.step_index();
       sim.step();
-      if (step % every == 0) results.write_output(step, sim.time(), sim.dt(), sim.snapshot(), sim.affine_snapshot());
+      if (step % every == 0)
+        results.write_output(step, sim.time(), sim.dt(), sim.snapshot(),
+                             deck.output.writes_particles(step) ? sim.affine_snapshot() : std::vector<std::array<double, 4>>{});
       progress.update(step, sim.time(), sim.dt(), sim.particle_count());
     }
   } catch (const common::NumericalError& e) {

@@ -956,10 +956,15 @@ void Engine::throw_first_error() const {
   throw common::NumericalError(os.str());
 }
 
-std::vector<std::array<double, 4>> Engine::affine_snapshot() const {
-  if (!transfer_.affine()) return {};
+std::vector<std::uint32_t> Engine::live_by_id() const {
   std::vector<std::uint32_t> by_id(order_.begin(), order_.end());
   std::sort(by_id.begin(), by_id.end(), [&](std::uint32_t a, std::uint32_t b) { return cur_.id[a] < cur_.id[b]; });
+  return by_id;
+}
+
+std::vector<std::array<double, 4>> Engine::affine_snapshot() const {
+  if (!transfer_.affine()) return {};
+  const std::vector<std::uint32_t> by_id = live_by_id();
   std::vector<std::array<double, 4>> out(by_id.size());
   for (std::size_t k = 0; k < by_id.size(); ++k) std::copy_n(&cur_.affine[4 * by_id[k]], 4, out[k].data());
   return out;
@@ -968,7 +973,7 @@ std::vector<std::array<double, 4>> Engine::affine_snapshot() const {
 std::vector<io::ParticleRecord> Engine::snapshot() const {
   std::vector<io::ParticleRecord> out;
   out.reserve(order_.size());
-  for (std::uint32_t p : order_) {
+  for (std::uint32_t p : live_by_id()) {  // by id: the indices sorted, not the records
     io::ParticleRecord r{};
     const Material& mat = materials_[cur_.material[p]];
     r.id = cur_.id[p];
@@ -1001,7 +1006,6 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
     }
     out.push_back(r);
   }
-  std::sort(out.begin(), out.end(), [](const io::ParticleRecord& a, const io::ParticleRecord& b) { return a.id < b.id; });
   return out;
 }
 

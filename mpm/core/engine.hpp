@@ -128,6 +128,7 @@ class Engine {
   void resort_particles(const std::vector<std::uint32_t>& previous);  ///< the same after a step, by a merge
   void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
+  std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
   std::int64_t cell_key(double x, double y) const;
 
   // grid

@@ -3,6 +3,7 @@
 // sets, stresses, or the resume HDF5 file) and what mpm/core builds a simulation from. Plain data, SI
 // units, angles in radians, everything already validated by the reader (the core only asserts).
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -92,6 +93,15 @@ struct Output {
   /// Both empty: no VTK files (ParaView opens particles.xdmf).
   std::vector<std::string> vtk_fields;
   std::vector<std::string> vtk_statevars;
+  /// Extension post_processing.particle_output_steps: the output steps (multiples of output_steps, below
+  /// nsteps, ascending) after which the particle files are written; series.csv keeps a row at every
+  /// output step. Empty (the key absent): particle files at every output step, as CB-Geo.
+  std::vector<long long> particle_output_steps;
+  /// Whether the output after loop step `step` (an output step) writes particle files.
+  bool writes_particles(long long step) const {
+    return particle_output_steps.empty() ||
+           std::binary_search(particle_output_steps.begin(), particle_output_steps.end(), step);
+  }
 };
 
 /// Extension (external_loading_conditions.base_acceleration): the grid's base, walls and whole frame

@@ -507,6 +507,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     if (deck.output.output_steps <= 0)
       pp.fail("output_steps", "expected an integer > 0, got " + std::to_string(deck.output.output_steps));
     read_vtk_keys(pp, deck.output);
+    read_particle_output_steps(pp, deck.analysis.nsteps, deck.output);
     pp.finish();
   }
 

@@ -69,4 +69,23 @@ void read_vtk_keys(StrictObject& pp, Output& out) {
   }
 }
 
+void read_particle_output_steps(StrictObject& pp, long long nsteps, Output& out) {
+  const json* steps = pp.optional("particle_output_steps");
+  if (steps == nullptr) return;
+  const std::string expected = "expected an array of output steps (multiples of output_steps = " +
+                               std::to_string(out.output_steps) + " below nsteps = " + std::to_string(nsteps) + ")";
+  if (!steps->is_array() || steps->empty()) pp.fail("particle_output_steps", expected + ", got " + steps->dump());
+  for (const auto& s : *steps) {
+    if (!s.is_number_integer()) pp.fail("particle_output_steps", expected + ", got " + s.dump());
+    const long long step = s.get<long long>();
+    if (step < 0 || step >= nsteps || step % out.output_steps != 0)
+      pp.fail("particle_output_steps", expected + ", got " + std::to_string(step));
+    out.particle_output_steps.push_back(step);
+  }
+  std::sort(out.particle_output_steps.begin(), out.particle_output_steps.end());
+  if (std::adjacent_find(out.particle_output_steps.begin(), out.particle_output_steps.end()) !=
+      out.particle_output_steps.end())
+    pp.fail("particle_output_steps", expected + ", got a step twice");
+}
+
 }  // namespace mpm::io

@@ -12,4 +12,9 @@ namespace mpm::io {
 /// Throws common::InputError naming the key for an unknown attribute or state variable.
 void read_vtk_keys(StrictObject& post_processing, Output& out);
 
+/// Reads the extension post_processing.particle_output_steps (Output::particle_output_steps) of a run of
+/// `nsteps` steps; out.output_steps must be read already. Throws common::InputError naming the key for
+/// anything but an array of distinct multiples of output_steps in [0, nsteps).
+void read_particle_output_steps(StrictObject& post_processing, long long nsteps, Output& out);
+
 }  // namespace mpm::io

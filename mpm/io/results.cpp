@@ -273,7 +273,7 @@ void ResultsWriter::write_particles(long long step, double time, std::span<const
 void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
                                  std::span<const std::array<double, 4>> affine) {
   prepare();
-  write_particles(step, time, particles, affine);
+  if (deck_.output.writes_particles(step)) write_particles(step, time, particles, affine);
   add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
   write_series();
 }

@@ -71,7 +71,8 @@ class ResultsWriter {
   /// The state before the first step (the first frame): initial_state.h5 (+ .vtp). A resumed run
   /// whose folder already holds earlier frames keeps those instead.
   void write_start(double time, std::span<const ParticleRecord> particles);
-  /// An output step: particles<step>.h5, then particles.xdmf and series.csv rewritten. `affine` (APIC
+  /// An output step: particles<step>.h5 (unless Output::particle_output_steps leaves it out), then
+  /// particles.xdmf and series.csv rewritten. `affine` (APIC
   /// runs: one matrix per record, same order) goes to the file's kAffineDataset; empty: none written.
   void write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
                     std::span<const std::array<double, 4>> affine = {});

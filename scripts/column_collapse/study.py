@@ -93,9 +93,12 @@ def run_fem(bins, fem_script, scene, out, tend):
     return {"name": "fem", "kind": "fem", "dir": d, "wall": {"fem": wall}}
 
 
-def tune_deck(deck_path, smoothing="none"):
-    """Study settings the bridge has no option for: automatic dt (CFL), FLIP/PIC blend, stress smoothing."""
+def tune_deck(deck_path, smoothing="none", particle_steps=None):
+    """Study settings the bridge has no option for: automatic dt (CFL), FLIP/PIC blend, stress smoothing,
+    and the steps with particle files (None: every output step)."""
     def edit(deck):
+        if particle_steps is not None:
+            deck["post_processing"]["particle_output_steps"] = particle_steps
         a = deck["analysis"]
         a["cfl"] = CFL
         a.pop("velocity_update", None)
@@ -103,6 +106,21 @@ def tune_deck(deck_path, smoothing="none"):
         a.update(transfer_keys(TRANSFER, PIC_BLEND))
         a["stress_smoothing"] = smoothing
     pipeline.edit_deck(deck_path, edit)
+
+
+def particle_output_steps(nsteps, dt, every, t0, keep_times):
+    """The output steps whose particle files the figures read: the first, the last, and the two around
+    each of keep_times (TOTAL time; the state after loop step s is at t0 + (s + 1) dt). mpm writes only
+    those (post_processing.particle_output_steps) instead of a ~30 MB file per output step that
+    prune_particle_files would delete; series.csv keeps its row at every output step."""
+    steps = list(range(0, nsteps, every))
+    keep = {steps[0], steps[-1]}
+    for t in keep_times:
+        x = ((t - t0) / dt - 1.0) / every
+        for k in (math.floor(x), math.ceil(x)):
+            if 0 <= k < len(steps):
+                keep.add(steps[k])
+    return sorted(keep)
 
 
 def mpm_nsteps(scene, duration):
@@ -114,7 +132,7 @@ def p_wave_speed():
     return math.sqrt(E_MOD * (1 - NU) / ((1 + NU) * (1 - 2 * NU) * RHO))
 
 
-def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads):
+def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads, keep_times=None):
     name = "hyb_%g" % t_transfer
     d = os.path.join(out, name)
     if os.path.isdir(d):
@@ -129,7 +147,9 @@ def run_hybrid(bins, scene, out, fem_dir, t_transfer, threads):
                "--scheme", SCHEME, "--dt", repr(dt), "--nsteps", str(nsteps), "--output-steps", str(out_steps),
                "--material-type", "mohr-coulomb", "--phi", str(PHI), "--psi", str(PSI), "--cohesion", str(COHESION / 1000.0)]
     w_bridge = pipeline.run_fem2mpm(bins, fem_dir, d, t_transfer, options)
-    tune_deck(os.path.join(d, "mpm.json"))
+    tune_deck(os.path.join(d, "mpm.json"),
+              particle_steps=None if keep_times is None else
+              particle_output_steps(nsteps, dt, out_steps, t_transfer, keep_times))
     w_mpm = pipeline.run_mpm(bins, d, threads)
     return {"name": name, "kind": "hybrid", "dir": d, "t0": t_transfer, "wall": {"fem2mpm": w_bridge, "mpm": w_mpm},
             "results": os.path.join(d, "results", "column")}
@@ -141,7 +161,7 @@ def transfer_keys(transfer, pic_blend):
 
 
 def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None, pic_blend=PIC_BLEND,
-                        transfer=TRANSFER, base="friction"):
+                        transfer=TRANSFER, base="friction", keep_times=None):
     """MPM only: particles on the MPM grid (ppd x ppd per cell, at the centres of equal sub-cells), K0
     elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v.
     base "friction": CB-Geo's base (y-velocity 0 and Coulomb friction); "contact": the friction constraint
@@ -206,16 +226,20 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
                           "damping": {"type": "Cundall", "damping_factor": 0.0}}, **transfer_keys(transfer, pic_blend)),
         "post_processing": {"path": "results/", "output_steps": max(1, int(round(out_every / dt)))},
     }
+    if keep_times is not None:
+        every = deck["post_processing"]["output_steps"]
+        deck["post_processing"]["particle_output_steps"] = particle_output_steps(nsteps, dt, every, 0.0, keep_times)
     with open(os.path.join(d, "mpm.json"), "w") as f:
         json.dump(deck, f, indent=2)
 
 
 def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None,
-                 pic_blend=PIC_BLEND, transfer=TRANSFER, base="friction"):
+                 pic_blend=PIC_BLEND, transfer=TRANSFER, base="friction", keep_times=None):
+    """keep_times: the TOTAL times whose particle files are written (particle_output_steps); None: all."""
     d = os.path.join(out, name)
     if os.path.isdir(d):
         shutil.rmtree(d)
-    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer, base)
+    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer, base, keep_times)
     w = pipeline.run_mpm(bins, d, threads)
     with open(os.path.join(d, "wall.txt"), "w") as f:
         f.write("%.3f\n" % w)
@@ -502,10 +526,10 @@ def sweep_one(bins, out, a, cell, ppd):
     front of a tall column) it is run again with a 2 % PIC blend (mpm's CFL 0.5 stability test)."""
     sc = sweep_scene(a, cell, ppd)
     try:
-        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a)
+        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a, keep_times=())
     except RuntimeError as e:
         log("sweep a = %g failed (%s); again with a %g PIC blend" % (a, str(e).splitlines()[-1][:160], SWEEP_RETRY_PIC_BLEND))
-        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a, pic_blend=SWEEP_RETRY_PIC_BLEND,
+        return run_mpm_only(bins, sc, os.path.join(out, "sweep"), 1, "a_%g" % a, keep_times=(), pic_blend=SWEEP_RETRY_PIC_BLEND,
                             transfer="flip")
 
 
@@ -627,13 +651,14 @@ def main(argv=None):
         % (mode, scene.width, scene.height, cell, ppd, ppd, scene.tau_c, BASE_MU, out))
     runs = {}
     snap_t = 1.0
+    figure_times = (1.0, 3.0, 5.0, snap_t)  # the particle files the figures read (and prune keeps)
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
         if args.fem_from:
             f_fem = concurrent.futures.Future()
             f_fem.set_result({"name": "fem", "kind": "fem", "dir": os.path.abspath(args.fem_from), "wall": {}})
         else:
             f_fem = ex.submit(run_fem, bins, args.fem_script, scene, out, fem_tend)
-        f_mpm = ex.submit(run_mpm_only, bins, scene, out, 1)
+        f_mpm = ex.submit(run_mpm_only, bins, scene, out, 1, keep_times=figure_times)
         f_smooth = {}
         if not args.no_checkerboard:
             for remedy in ("cell_volumetric", "cell_strain", "nodal_strain"):
@@ -651,7 +676,7 @@ def main(argv=None):
         for t, why in not_possible.items():
             log("hybrid %g s skipped: %s" % (t, why))
         transfers = [t for t in transfers if t not in not_possible]
-        f_h = {t: ex.submit(run_hybrid, bins, scene, out, runs["fem"]["dir"], t, 1) for t in transfers}
+        f_h = {t: ex.submit(run_hybrid, bins, scene, out, runs["fem"]["dir"], t, 1, figure_times) for t in transfers}
         failed = {}
         try:
             runs["mpm"] = f_mpm.result()
@@ -710,7 +735,7 @@ def main(argv=None):
         figures(out, scene, series, fem_prof, hyb1, snaps)
     for name, r in runs.items():
         if "results" in r:
-            prune_particle_files(r, (1.0, 3.0, 5.0, snap_t))
+            prune_particle_files(r, figure_times)
     for run in smooth.values():
         prune_particle_files(run, (snap_t,))
     t_all = time.perf_counter() - t_start

@@ -399,6 +399,24 @@ TEST(DeckReader, VtkKeysTakeCbGeoNamesAndBothStateVariableForms) {
   EXPECT_EQ(deck.output.vtk_statevars, (std::vector<std::string>{"pdstrain", "phi"}));
 }
 
+// Extension: the output steps that write particle files (output_steps = 10, nsteps = 100 in SmallDeck).
+TEST(DeckReader, ParticleOutputStepsAreOutputStepsBelowNsteps) {
+  SmallDeck d("pos_ok");
+  d.deck["post_processing"]["particle_output_steps"] = json::parse("[90, 0, 30]");
+  const mpm::io::Deck deck = d.read();
+  EXPECT_EQ(deck.output.particle_output_steps, (std::vector<long long>{0, 30, 90}));
+  EXPECT_TRUE(deck.output.writes_particles(30));
+  EXPECT_FALSE(deck.output.writes_particles(40));
+  EXPECT_TRUE(SmallDeck("pos_absent").read().output.writes_particles(40));  // absent: every output step
+  int case_number = 0;
+  for (const char* bad : {"[15]", "[100]", "[-10]", "[10, 10]", "[]", "10", "[\"20\"]", "[2.5]"}) {
+    SmallDeck e("pos_bad" + std::to_string(case_number++));
+    e.deck["post_processing"]["particle_output_steps"] = json::parse(bad);
+    EXPECT_MESSAGE_HAS(e.error(), "post_processing.particle_output_steps: expected an array of output steps "
+                                  "(multiples of output_steps = 10 below nsteps = 100)") << bad;
+  }
+}
+
 TEST(DeckReaderErrors, WrongTypesAreNamed) {
   SmallDeck d("types");
   d.deck["analysis"]["dt"] = "0.001";

@@ -154,6 +154,33 @@ TEST(Results, WritesParticleFilesXdmfAndSeries) {
   fs::remove_all(deck.working_dir);
 }
 
+// post_processing.particle_output_steps: particle files only after the listed output steps, a series
+// row after every output step, and the XDMF lists only the files written.
+TEST(Results, ParticleFilesOnlyAtTheListedOutputSteps) {
+  mpm::io::Deck deck;
+  deck.working_dir = fs::temp_directory_path() / ("geoflow_results_steps_" + std::to_string(::getpid()));
+  fs::remove_all(deck.working_dir);
+  deck.grid = unit_grid();
+  deck.analysis.nsteps = 101;
+  deck.output.path = "results/";
+  deck.output.uuid = "run";
+  deck.output.output_steps = 50;
+  deck.output.particle_output_steps = {0, 100};
+  mpm::io::ResultsWriter w(deck);
+  const auto ps = four_particles();
+  for (long long step : {0, 50, 100}) w.write_output(step, 0.001 * (step + 1), 0.001, ps);
+  const fs::path folder = deck.working_dir / "results/run";
+  EXPECT_TRUE(fs::exists(folder / "particles000.h5"));
+  EXPECT_FALSE(fs::exists(folder / "particles050.h5"));
+  EXPECT_TRUE(fs::exists(folder / "particles100.h5"));
+  const std::string series = slurp(folder / "series.csv");
+  for (const char* row : {"\n0,0.001,", "\n50,0.051,", "\n100,0.101,"}) EXPECT_NE(series.find(row), std::string::npos) << row;
+  const std::string xdmf = slurp(folder / "particles.xdmf");
+  EXPECT_EQ(xdmf.find("particles050.h5"), std::string::npos);
+  EXPECT_NE(xdmf.find("particles100.h5"), std::string::npos);
+  fs::remove_all(deck.working_dir);
+}
+
 TEST(ParticleFields, TensorsInParaViewOrderSizesAndStateVariables) {
   auto ps = four_particles();
   ps[1].stress_xx = 1, ps[1].stress_yy = 2, ps[1].stress_zz = 3, ps[1].tau_xy = 4;
