@@ -66,17 +66,20 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
   const constitutive::IsotropicElasticity el{bulk, shear};
   const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, el);
   const constitutive::MohrCoulombStrength strength{svars[0], svars[1], svars[2], tension_cutoff};
-  const auto is_strength_of = [&](const constitutive::MohrCoulombReturnMap& map) {
-    if (!map.valid()) return false;
-    const constitutive::MohrCoulombStrength& c = map.surface().strength;
-    return strength.friction == c.friction && strength.dilation == c.dilation && strength.cohesion == c.cohesion;
+  // The maps were built from peak_surface and residual_surface: their strengths, without a call.
+  const auto is_strength_of = [&](const constitutive::MohrCoulombReturnMap& map,
+                                  const constitutive::MohrCoulombSurface& built_from) {
+    const constitutive::MohrCoulombStrength& c = built_from.strength;
+    return map.valid() && strength.friction == c.friction && strength.dilation == c.dilation &&
+           strength.cohesion == c.cohesion;
   };
   const auto has_angles_of = [&](const constitutive::MohrCoulombSurface& cached) {
     return strength.friction == cached.strength.friction && strength.dilation == cached.strength.dilation;
   };
   Eigen::Map<Eigen::Vector4d> out(stress);
   const constitutive::MohrCoulombReturnMap* map =
-      is_strength_of(peak_map) ? &peak_map : (is_strength_of(residual_map) ? &residual_map : nullptr);
+      is_strength_of(peak_map, peak_surface) ? &peak_map
+                                             : (is_strength_of(residual_map, residual_surface) ? &residual_map : nullptr);
   if (map != nullptr && map->admits(trial)) {  // elastic: the trial stands, the state is unchanged
     out = trial;
     return;
