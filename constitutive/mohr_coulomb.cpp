@@ -361,11 +361,8 @@ MohrCoulombUpdate MohrCoulombReturnMap::apply_plastic(const PlaneStrainStress& t
 }
 
 MohrCoulombUpdate MohrCoulombReturnMap::apply(const PlaneStrainStress& trial) const {
-  const Data& d = *data_;
-  const Spectral sp = decompose(trial);
-  if (inside(sp.sorted, d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension))
-    return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
-  return plastic_return(trial, sp, d.elasticity, d.planes, d.solves.data());
+  if (admits(trial)) return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
+  return apply_plastic(trial);
 }
 
 MohrCoulombUpdate mohr_coulomb_update(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,

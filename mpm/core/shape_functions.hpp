@@ -87,24 +87,11 @@ struct GimpShape {
     const double il = 1.0 / l;
     for (int a = 0; a < kWidth; ++a) node(s - static_cast<double>(base + a), l, il, w[a], dw[a]);
   }
-  /// node() for two (r, l) pairs at once (the x and y axes of a particle), without branches: the four
-  /// pieces are evaluated and one is selected per lane (the piece a node falls in changes from particle
-  /// to particle, which a branch predictor cannot follow). Each piece is node()'s expression, so the
-  /// values are node()'s bit for bit.
-  static void node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) {
-    const Double2 one = splat2(1.0), zero = splat2(0.0);
-    const Double2 a = abs2(r);
-    const Double2 sgn = select(r < zero, splat2(-1.0), one);
-    const Double2 d = one + l - a;
-    const Double2 w_edge = 0.25 * d * d * il, dw_edge = -0.5 * sgn * d * il;
-    const Double2 w_hat = one - a, dw_hat = -sgn;
-    const Double2 w_core = one - 0.5 * (r * r + l * l) * il, dw_core = -r * il;
-    const Mask2 outside = a >= one + l, edge = a > one - l, hat = a > l;
-    w = select(outside, zero, select(edge, w_edge, select(hat, w_hat, w_core)));
-    dw = select(outside, zero, select(edge, dw_edge, select(hat, dw_hat, dw_core)));
-  }
-  /// node2() for the stencil's middle node (the particle's nearest: |r| <= 1/2 <= 1 - l): the core or
-  /// the hat piece, node()'s expressions, without the two pieces it cannot reach.
+  /// node() for two (r, l) pairs at once (the x and y axes of a particle), without branches (the piece
+  /// a node falls in changes from particle to particle, which a branch predictor cannot follow): the
+  /// pieces a node can reach are evaluated and one is selected per lane, each node()'s expression, so
+  /// the values are node()'s bit for bit. For the stencil's middle node (the particle's nearest:
+  /// |r| <= 1/2 <= 1 - l): the core or the hat piece.
   static void middle_node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) {
     const Double2 one = splat2(1.0);
     const Double2 a = abs2(r);
@@ -112,8 +99,9 @@ struct GimpShape {
     w = select(hat, one - a, one - 0.5 * (r * r + l * l) * il);
     dw = select(hat, -select(r < splat2(0.0), splat2(-1.0), one), -r * il);
   }
-  /// node2() for an outer node of the stencil at distance a = |r| in (1/2, 3/2] (a >= l: never the
-  /// core piece) on the side of sign `sgn` (+1: the node before the particle, -1: the one after).
+  /// The same for an outer node of the stencil at distance a = |r| in (1/2, 3/2] (a >= l: never the
+  /// core piece) on the side of sign `sgn` (+1: the node before the particle, -1: the one after): the
+  /// hat, edge or outside piece.
   static void outer_node2(Double2 a, double sgn, Double2 l, Double2 il, Double2& w, Double2& dw) {
     const Double2 one = splat2(1.0), zero = splat2(0.0);
     const Double2 d = one + l - a;

@@ -68,6 +68,7 @@ inline void scatter_mass_momentum(double* band_row, std::size_t row_stride, cons
     }
   }
 }
+
 /// Only the momentum (MUSL's remap of the updated particle momentum, Sulsky, Zhou & Schreyer 1995, eq. 20).
 template <int W, class Momentum>
 inline void scatter_momentum(double* band_row, std::size_t row_stride, const StencilWeights<W>& w,

@@ -92,19 +92,28 @@ void check_eval_xy_matches_eval(double lx, double ly) {
 TEST(ShapeFunctions, BothAxesAtOnceGiveTheSameWeightsBitForBit) {
   check_eval_xy_matches_eval<LinearShape>(0.0, 0.0);
   for (double l : {0.05, 0.125, 0.25, 0.5}) check_eval_xy_matches_eval<GimpShape>(l, 0.5 * l);
-  // Each piece and its boundaries, both signs: node2 against node, lane by lane.
+  // Each piece and its boundaries, both signs: the two-lane node functions against node, lane by lane
+  // (the middle node for |r| <= 1/2, an outer node beyond, on either side).
   for (double l : {0.125, 0.5})
     for (double r : {-1.6, -1.0 - l, -1.2, -1.0 + l, -0.6, -l, -0.05, 0.0, -0.0, 0.05, l, 0.6, 1.0 - l, 1.2, 1.0 + l, 1.6}) {
-      double w, dw;
+      double w, dw, wm, dwm;
       GimpShape::node(r, l, w, dw);
-      mpm::core::Double2 w2, dw2;
-      GimpShape::node2(mpm::core::Double2{r, -r}, mpm::core::splat2(l), mpm::core::splat2(1.0 / l), w2, dw2);
-      double wm, dwm;
       GimpShape::node(-r, l, wm, dwm);
+      const mpm::core::Double2 l2 = mpm::core::splat2(l), il2 = mpm::core::splat2(1.0 / l);
+      mpm::core::Double2 w2, dw2, wm2, dwm2;
+      if (std::abs(r) <= 0.5) {
+        GimpShape::middle_node2(mpm::core::Double2{r, -r}, l2, il2, w2, dw2);
+        wm2 = mpm::core::Double2{w2[1], w2[1]};
+        dwm2 = mpm::core::Double2{dw2[1], dw2[1]};
+      } else {  // the node before the particle has r > 0 (sign +1)
+        const double sgn = r > 0 ? 1.0 : -1.0;
+        GimpShape::outer_node2(mpm::core::splat2(std::abs(r)), sgn, l2, il2, w2, dw2);
+        GimpShape::outer_node2(mpm::core::splat2(std::abs(r)), -sgn, l2, il2, wm2, dwm2);
+      }
       EXPECT_EQ(w2[0], w) << r;
       EXPECT_EQ(dw2[0], dw) << r;
-      EXPECT_EQ(w2[1], wm) << r;
-      EXPECT_EQ(dw2[1], dwm) << r;
+      EXPECT_EQ(wm2[0], wm) << r;
+      EXPECT_EQ(dwm2[0], dwm) << r;
     }
 }
 

@@ -54,6 +54,20 @@ std::string slurp(const fs::path& f) {
   return s.str();
 }
 
+/// A run of 101 steps with an output every 50 steps into results/run/ of an emptied scratch folder
+/// named `tag` + the process id.
+mpm::io::Deck output_deck(const std::string& tag) {
+  mpm::io::Deck deck;
+  deck.working_dir = fs::temp_directory_path() / (tag + std::to_string(::getpid()));
+  fs::remove_all(deck.working_dir);
+  deck.grid = unit_grid();
+  deck.analysis.nsteps = 101;
+  deck.output.path = "results/";
+  deck.output.uuid = "run";
+  deck.output.output_steps = 50;
+  return deck;
+}
+
 }  // namespace
 
 TEST(Series, PercentileIsNumpysLinearInterpolation) {
@@ -92,15 +106,8 @@ TEST(Series, CheckerboardIndexIsTheRmsDeviationFromTheCellMeanOverRhoGH) {
 }
 
 TEST(Results, WritesParticleFilesXdmfAndSeries) {
-  mpm::io::Deck deck;
-  deck.working_dir = fs::temp_directory_path() / ("geoflow_results_" + std::to_string(::getpid()));
-  fs::remove_all(deck.working_dir);
-  deck.grid = unit_grid();
-  deck.analysis.nsteps = 101;
+  mpm::io::Deck deck = output_deck("geoflow_results_");
   deck.analysis.gravity = Eigen::Vector2d(0, -9.81);
-  deck.output.path = "results/";
-  deck.output.uuid = "run";
-  deck.output.output_steps = 50;
   mpm::io::ResultsWriter w(deck);
   EXPECT_FALSE(fs::exists(w.folder()));  // nothing written before the first output
   const auto ps = four_particles();
@@ -157,14 +164,7 @@ TEST(Results, WritesParticleFilesXdmfAndSeries) {
 // post_processing.particle_output_steps: particle files only after the listed output steps, a series
 // row after every output step, and the XDMF lists only the files written.
 TEST(Results, ParticleFilesOnlyAtTheListedOutputSteps) {
-  mpm::io::Deck deck;
-  deck.working_dir = fs::temp_directory_path() / ("geoflow_results_steps_" + std::to_string(::getpid()));
-  fs::remove_all(deck.working_dir);
-  deck.grid = unit_grid();
-  deck.analysis.nsteps = 101;
-  deck.output.path = "results/";
-  deck.output.uuid = "run";
-  deck.output.output_steps = 50;
+  mpm::io::Deck deck = output_deck("geoflow_results_steps_");
   deck.output.particle_output_steps = {0, 100};
   mpm::io::ResultsWriter w(deck);
   const auto ps = four_particles();
@@ -212,14 +212,7 @@ TEST(ParticleFields, TensorsInParaViewOrderSizesAndStateVariables) {
 }
 
 TEST(Results, StartFrameGridAndVtkFiles) {
-  mpm::io::Deck deck;
-  deck.working_dir = fs::temp_directory_path() / ("geoflow_results_vtk_" + std::to_string(::getpid()));
-  fs::remove_all(deck.working_dir);
-  deck.grid = unit_grid();
-  deck.analysis.nsteps = 101;
-  deck.output.path = "results/";
-  deck.output.uuid = "run";
-  deck.output.output_steps = 50;
+  mpm::io::Deck deck = output_deck("geoflow_results_vtk_");
   deck.output.vtk_fields = {"stress"};
   deck.output.vtk_statevars = {"pdstrain"};
   deck.velocity_constraints.push_back({{0, 1, 2}, 1, 0.0});
