@@ -231,9 +231,11 @@ bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& s
 /// increment). The one place this test is made, for the fast path and for the full return alike.
 bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st, bool tension) {
   const double two_c_cos = 2.0 * st.cohesion * cos_phi;
+  const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
+  // Strictly inside needs no tolerance (tol >= 0): the common case, without the stress scale.
+  if (f_main <= 0.0 && (!tension || t[0] - st.tension_cutoff <= 0.0)) return true;
   const double scale = std::max({std::abs(t[0]), std::abs(t[2]), two_c_cos, tension ? std::abs(st.tension_cutoff) : 0.0});
   const double tol = 1e-12 * scale;
-  const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
   return f_main <= tol && (!tension || t[0] - st.tension_cutoff <= tol);
 }
 bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
