@@ -176,8 +176,9 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SlidingBlock, ApicStaysAtRestOnAContactFlatterThanTheFrictionAngle) {
   // Static friction on the one-sided contact under APIC (tan 20 deg < mu = 0.5): measured 1.3 mm in 1 s.
-  // Not FLIP: without dissipation the block, started out of equilibrium, rocks on the one-sided base and
-  // creeps down at each lift (0.12 m in 1 s; on the bilateral base it holds, the test above).
+  // Not FLIP: the one-sided base rectifies its particle velocity noise, the block hops and creeps down
+  // (0.12 m in 1 s, from the K0 start or the inclined layer's equilibrium alike; on the bilateral base it
+  // holds, the test above; mpm/README.md "Friction and flutter").
   for (auto scheme : {Scheme::USF, Scheme::MUSL}) {
     SCOPED_TRACE(scheme_name(scheme));
     SlidingBlockSpec spec = stiff_block(CellType::Gimp16);
