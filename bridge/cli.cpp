@@ -24,6 +24,7 @@
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
 #include "common/printable_text.hpp"
+#include "mpm/io/deck_reader.hpp"
 #include "mpm/io/deck_rules.hpp"
 
 namespace bridge {
@@ -406,6 +407,10 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
       ->check(CLI::IsMember({"apic", "flip", "pic"}))->capture_default_str()->group("MPM deck");
   app.add_flag("--pic", o.deck.velocity_update, "velocity_update true (PIC): the same as --transfer pic")->group("MPM deck");
   app.add_option("--damping", o.deck.damping, "Cundall damping factor")->capture_default_str()->group("MPM deck");
+  app.add_option("--stress-smoothing", o.deck.stress_smoothing,
+                 "checkerboard remedy (analysis.stress_smoothing): none, cell_strain (the one that works at full "
+                 "resolution, mpm/README.md), cell_volumetric, nodal_strain or nodal_volumetric")
+      ->check(CLI::IsMember(mpm::io::stress_smoothing_methods()))->capture_default_str()->group("MPM deck");
   app.add_option("--ground-motion", o.ground_motion,
                  "keep shaking the MPM run after a transfer during an earthquake: the acceleration record of the FEM "
                  "script's UniformExcitation (an OpenSees Path -filePath file: numbers, any per line), cut at the transfer "

@@ -367,6 +367,7 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   if (!pic) analysis["transfer"] = options.transfer;
   analysis["locate_particles"] = true;
   analysis["damping"] = {{"type", "Cundall"}, {"damping_factor", options.damping}};
+  if (options.stress_smoothing != "none") analysis["stress_smoothing"] = options.stress_smoothing;
   analysis["resume"] = {{"resume", true}, {"uuid", options.uuid}, {"step", options.step}};
   deck["analysis"] = analysis;
   deck["post_processing"] = {{"path", "results/"}, {"output_steps", d.output_steps}};

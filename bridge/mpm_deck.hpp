@@ -58,6 +58,9 @@ struct DeckOptions {
   /// docs/study/transfer_comparison.md), "flip" or "pic".
   std::string transfer = "apic";
   double damping = 0;                         ///< Cundall damping factor
+  /// analysis.stress_smoothing, the checkerboard remedy (mpm/core/stress_remedy.hpp): "none" (CB-Geo's
+  /// behaviour) or one of mpm::io::stress_smoothing_methods(); "none" is not written.
+  std::string stress_smoothing = "none";
   /// The record that goes on shaking the base after the transfer (ground_motion.hpp); unset: none.
   std::optional<GroundMotion> ground_motion;
   /// The FEM's nodal loads on the particles (nodal_loads.hpp); written as one particle set and one

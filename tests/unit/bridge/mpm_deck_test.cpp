@@ -103,6 +103,17 @@ TEST(MpmDeck, DefaultBaseIsAOneSidedFrictionalContact) {
   EXPECT_EQ(bc["friction_constraints"][0]["friction"], 0.45);
 }
 
+// --stress-smoothing: written as analysis.stress_smoothing (the checkerboard remedy of this project's mpm);
+// the default "none" writes no key, so a default deck keeps CB-Geo's schema.
+TEST(MpmDeck, StressSmoothingKey) {
+  bridge::DeckOptions o;
+  EXPECT_FALSE(nlohmann::json::parse(bridge::build_deck(column_state(), {}, o).mpm_json)["analysis"].contains(
+      "stress_smoothing"));
+  o.stress_smoothing = "cell_strain";
+  const auto deck = nlohmann::json::parse(bridge::build_deck(column_state(), {}, o).mpm_json);
+  EXPECT_EQ(deck["analysis"]["stress_smoothing"], "cell_strain");
+}
+
 // --base-y: the base node set is every node at or below the FEM base, so the grid may extend one cell
 // row below it (a GIMP particle that dips a hair below the base then stays inside the grid).
 TEST(MpmDeck, BaseBelowTheGridEdge) {
