@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <unordered_map>
 
 #include "common/input_error.hpp"
@@ -474,33 +475,76 @@ void Analysis::commit_step(double dt) {
   domain_.commit();
 }
 
+int Analysis::try_step(double dt, int& iterations) {
+  iterations = 0;
+  try {
+    setup();
+    forces_current_ = false;  // the domain may have changed since the last step (Tcl commands, a revert)
+    new_step(dt);
+    if (!solve_step(config_.algorithm, *this, test_, workspace_, iterations)) {
+      std::cerr << "WARNING " << (config_.transient ? "DirectIntegrationAnalysis" : "StaticAnalysis")
+                << "::analyze() - the Algorithm failed at time " << domain_.time()
+                << "; the domain is reverted to the last committed state (t = " << domain_.committed_time()
+                << ")\n";
+      domain_.revert_to_last_commit();
+      stats_.iterations += iterations;
+      return -3;
+    }
+  } catch (const common::NumericalError& e) {
+    std::cerr << "WARNING analyze: " << e.what() << " at time " << domain_.time()
+              << "; the domain is reverted to the last committed state (t = " << domain_.committed_time() << ")\n";
+    domain_.revert_to_last_commit();
+    return -3;
+  }
+  stats_.iterations += iterations;
+  return 0;
+}
+
 int Analysis::analyze(int steps, double dt) {
   if (config_.transient && !(dt > 0.0)) throw common::InputError("analyze", "expected dt > 0 for a transient analysis");
   for (int s = 0; s < steps; ++s) {
     int iterations = 0;
-    try {
-      setup();
-      forces_current_ = false;  // the domain may have changed since the last step (Tcl commands, a revert)
-      new_step(dt);
-      if (!solve_step(config_.algorithm, *this, test_, workspace_, iterations)) {
-        std::cerr << "WARNING " << (config_.transient ? "DirectIntegrationAnalysis" : "StaticAnalysis")
-                  << "::analyze() - the Algorithm failed at time " << domain_.time()
-                  << "; the domain is reverted to the last committed state (t = " << domain_.committed_time()
-                  << ")\n";
-        domain_.revert_to_last_commit();
-        stats_.iterations += iterations;
-        return -3;
-      }
-    } catch (const common::NumericalError& e) {
-      std::cerr << "WARNING analyze: " << e.what() << " at time " << domain_.time()
-                << "; the domain is reverted to the last committed state (t = " << domain_.committed_time() << ")\n";
-      domain_.revert_to_last_commit();
-      return -3;
-    }
+    if (const int result = try_step(dt, iterations); result < 0) return result;
     last_iterations_ = std::max(iterations, 1);
-    stats_.iterations += iterations;
     ++stats_.steps;
     commit_step(dt);
+  }
+  stats_.factorizations = solver_->factorizations();
+  return 0;
+}
+
+int Analysis::analyze_variable(int steps, double dt, double dt_min, double dt_max, int jd) {
+  if (!config_.transient) throw common::InputError("analyze", "a variable time step needs a transient analysis");
+  if (!(dt > 0.0)) throw common::InputError("analyze", "expected dt > 0 for a transient analysis");
+  const double total = steps * dt;
+  double done = 0.0, current = dt;
+  while (done < total) {
+    int iterations = 0;
+    const int result = try_step(current, iterations);
+    if (result == 0) {
+      last_iterations_ = std::max(iterations, 1);
+      ++stats_.steps;
+      commit_step(current);
+      done += current;
+    } else if (current <= dt_min) {
+      std::cerr << "WARNING VariableTimeStepDirectIntegrationAnalysis::analyze() - failed at time "
+                << domain_.committed_time() << "\n";
+      stats_.factorizations = solver_->factorizations();
+      return result;
+    }
+    // determineDt: a failed step ran all max_iter tests and one more was counted (OpenSees' tests).
+    const int tests = std::max(result == 0 ? iterations : iterations + 1, 1);
+    const double failed_dt = current;
+    current *= static_cast<double>(jd) / tests;
+    if (result != 0 && current >= failed_dt) {
+      // Jd >= max_iter + 1 (or a step that failed before its tests): OpenSees retries with a dt no smaller
+      // and loops for ever; halve it instead.
+      std::cerr << "WARNING VariableTransient: Jd = " << jd << " would not shrink the failed step (" << tests
+                << " tests); retrying with dt / 2\n";
+      current = 0.5 * failed_dt;
+    }
+    if (current < dt_min) current = dt_min - std::numeric_limits<double>::epsilon();
+    else if (current > dt_max) current = dt_max;
   }
   stats_.factorizations = solver_->factorizations();
   return 0;

@@ -45,6 +45,15 @@ class Analysis final : public StepProblem {
   /// Runs `steps` steps (dt ignored by static analyses). Returns 0, or -2 (step could not start),
   /// -3 (the algorithm failed or the system is singular; warning on stderr, state reverted).
   int analyze(int steps, double dt);
+  /// OpenSees' VariableTransient (VariableTimeStepDirectIntegrationAnalysis::analyze): steps of dt_k until
+  /// steps * dt of time is done (the last step may pass it); after every step, converged or not,
+  /// dt_{k+1} = dt_k jd / n_k with n_k the convergence tests of the step (a failed one counts max_iter + 1,
+  /// as OpenSees' tests do), kept in [dt_min, dt_max] (below dt_min: dt_min - DBL_EPSILON, so that a
+  /// further failure ends the analysis); a failed step is reverted and retried with the new dt unless its
+  /// dt was already <= dt_min, which returns the failure code. Where OpenSees would retry a failed step
+  /// with a dt no smaller (Jd >= max_iter + 1) and loop for ever, the dt is halved (warning). Returns 0 or
+  /// the negative code of analyze().
+  int analyze_variable(int steps, double dt, double dt_min, double dt_max, int jd);
   const AnalysisStats& stats() const { return stats_; }
   const ConvergenceTest& test() const { return test_; }
   const AnalysisConfig& config() const { return config_; }
@@ -65,6 +74,9 @@ class Analysis final : public StepProblem {
   void new_step(double dt);
   void apply_increment(const Eigen::VectorXd& full);  // full-dof increment through the integrator
   void commit_step(double dt);
+  /// One step of dt: setup, predictor, solve; the state is reverted (warning on stderr) when it fails.
+  /// Returns 0 (converged, not yet committed) or -3; `iterations` counts the algorithm's iterations.
+  int try_step(double dt, int& iterations);
   void impose_prescribed();
   /// Trial strains of every element from the nodes' trial displacements (vector loop, no map walk); in a
   /// transient analysis each element's unbalance contribution is formed in the same pass (element_force_).

@@ -108,11 +108,12 @@ std::string cmd_integrator(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_analysis(Context& ctx, common::CommandArgs& args) {
-  const std::string type = args.word("type (Static or Transient)");
+  const std::string type = args.word("type (Static, Transient or VariableTransient)");
   if (type == "Static") ctx.chain.transient = false;
-  else if (type == "Transient") ctx.chain.transient = true;
-  else args.fail("unknown analysis type '" + type + "' (Static or Transient)");
+  else if (type == "Transient" || type == "VariableTransient") ctx.chain.transient = true;
+  else args.fail("unknown analysis type '" + type + "' (Static, Transient or VariableTransient)");
   args.expect_end();
+  ctx.chain.variable_time_step = type == "VariableTransient";
   const analysis::AnalysisConfig config = complete_chain(ctx);
   if (config.transient == config.integrator.is_static()) {
     args.fail(std::string("integrator ") + (config.transient ? "LoadControl is static" : "is transient") +
@@ -127,10 +128,18 @@ std::string cmd_analyze(Context& ctx, common::CommandArgs& args) {
   const int steps = args.integer("numSteps");
   if (steps < 0) args.fail("expected numSteps >= 0");
   if (!ctx.chain.transient) args.fail("no analysis defined; use 'analysis Static' or 'analysis Transient' first");
-  double dt = 0.0;
+  double dt = 0.0, dt_min = 0.0, dt_max = 0.0;
+  int jd = 0;
   if (*ctx.chain.transient) {
     dt = args.number("dt");
     if (!(dt > 0.0)) args.fail("expected dt > 0");
+    if (ctx.chain.variable_time_step) {  // OpenSees: analyze numIncr deltaT dtMin dtMax Jd
+      dt_min = args.number("dtMin");
+      dt_max = args.number("dtMax");
+      jd = args.integer("Jd");
+      if (!(dt_min > 0.0) || !(dt_max >= dt_min)) args.fail("expected 0 < dtMin <= dtMax");
+      if (jd < 1) args.fail("expected Jd >= 1 (the desired iterations per step)");
+    }
   } else if (!args.empty()) {
     args.number("dt");  // OpenSees ignores dt for static analyses
   }
@@ -144,7 +153,8 @@ std::string cmd_analyze(Context& ctx, common::CommandArgs& args) {
     ctx.analysis = std::make_unique<analysis::Analysis>(ctx.domain, config);
     ctx.analysis_dirty = false;
   }
-  const int result = ctx.analysis->analyze(steps, dt);
+  const int result = ctx.chain.variable_time_step ? ctx.analysis->analyze_variable(steps, dt, dt_min, dt_max, jd)
+                                                  : ctx.analysis->analyze(steps, dt);
   if (result < 0) ++ctx.failed_analyses;
   return std::to_string(result);
 }

@@ -28,7 +28,8 @@ struct AnalysisChain {
   std::optional<analysis::TestConfig> test;
   std::optional<analysis::AlgorithmConfig> algorithm;
   std::optional<analysis::IntegratorConfig> integrator;
-  std::optional<bool> transient;  ///< set by `analysis Static|Transient`
+  std::optional<bool> transient;  ///< set by `analysis Static|Transient|VariableTransient`
+  bool variable_time_step = false;  ///< `analysis VariableTransient`: analyze takes dt dtMin dtMax Jd
 };
 
 struct Context {

@@ -143,6 +143,82 @@ if {$it < 1 || [llength $norms] != $it || [lindex $norms end] > 1e-9} { error "t
 )tcl"), "");
 }
 
+// analysis VariableTransient (OpenSees VariableTimeStepDirectIntegrationAnalysis): after each step
+// dt *= Jd / (tests of the step), kept in [dtMin, dtMax]; a failed step counts max_iter + 1 tests, is
+// reverted and retried with the smaller dt; the analysis ends once numIncr * dt of time is done.
+constexpr const char* kOneQuadUnderRisingLoad = R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0
+node 2 1 0
+node 3 1 1
+node 4 0 1
+nDMaterial ElasticIsotropic 1 1000.0 0.25 2.0
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+fix 1 1 1
+fix 2 1 1
+timeSeries Linear 1
+pattern Plain 1 1 { load 3 1.0 0.0; load 4 1.0 0.0 }
+constraints Plain; numberer Plain; system BandGeneral
+algorithm Newton
+integrator Newmark 0.5 0.25
+analysis VariableTransient
+)tcl";
+
+TEST(TclCommands, VariableTransientGrowsTheStepByJdOverTheIterations) {
+  // Linear model, Newton: 2 tests per step (the second sees a zero increment), Jd = 4: dt doubles up to
+  // dtMax = 0.05: steps end at 0.01, 0.03, 0.07, 0.12 (the last passes numIncr dt = 0.1, as OpenSees').
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kOneQuadUnderRisingLoad) + R"tcl(
+test NormDispIncr 1e-12 10
+set ok [analyze 10 0.01 0.001 0.05 4]
+if {$ok != 0} { error "analyze returned $ok" }
+if {abs([getTime] - 0.12) > 1e-12} { error "time [getTime]" }
+)tcl"), "");
+}
+
+TEST(TclCommands, VariableTransientRetriesAFailedStepWithASmallerStep) {
+  // One test allowed (maxIter 1): the first step, from rest, passes NormDispIncr 1e-7 at dt = 0.005
+  // (6.2e-8) but not at 0.01 (7.0e-7). It fails at 0.01, counts 2 tests, is retried at 0.01 * 1 / 2 and
+  // committed at t = 0.005. As the motion grows, steps keep failing until dt <= dtMin: the analysis then
+  // returns the failure with the last converged state kept.
+  Interpreter interp;
+  const std::string dir = testing::TempDir();
+  ASSERT_EQ(error_of(interp, std::string(kOneQuadUnderRisingLoad) + "recorder Node -file " + dir +
+                                 "/variable_dt.out -time -node 3 -dof 1 disp\n" + R"tcl(
+test NormDispIncr 1e-7 1
+set ok [analyze 10 0.01 1e-5 0.01 1]
+remove recorders
+if {$ok >= 0} { error "analyze returned $ok" }
+if {[getTime] <= 0.005 || [getTime] >= 0.1} { error "time [getTime]" }
+)tcl"), "");
+  std::ifstream in(dir + "/variable_dt.out");
+  double t = 0, u = 0;
+  ASSERT_TRUE(in >> t >> u);
+  EXPECT_CLOSE(t, 0.005, 1e-12, 0.0);
+  EXPECT_TRUE(in >> t >> u);
+  EXPECT_CLOSE(t, 0.00625, 1e-12, 0.0);  // 0.005 and 0.0025 failed, 0.00125 passed
+}
+
+TEST(TclCommands, VariableTransientNeverRetriesAFailedStepWithTheSameStep) {
+  // Jd = 5 > max_iter + 1 = 2: OpenSees would retry at 0.01 * 5 / 2 (capped at dtMax) for ever; here the
+  // failed step is halved until dtMin, and analyze returns the failure.
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kOneQuadUnderRisingLoad) + R"tcl(
+test NormDispIncr 1e-30 1
+set ok [analyze 10 0.01 1e-4 0.01 5]
+if {$ok >= 0} { error "analyze returned $ok" }
+if {[getTime] != 0.0} { error "time [getTime]" }
+)tcl"), "");
+}
+
+TEST(TclCommands, VariableTransientAnalyzeNeedsDtMinDtMaxAndJd) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kOneQuadUnderRisingLoad) + "test NormDispIncr 1e-12 10\n"), "");
+  EXPECT_NE(error_of(interp, "analyze 10 0.01").find("dtMin"), std::string::npos);
+  EXPECT_NE(error_of(interp, "analyze 10 0.01 0.02 0.01 4").find("dtMin <= dtMax"), std::string::npos);
+  EXPECT_NE(error_of(interp, "analyze 10 0.01 0.001 0.05 0").find("Jd >= 1"), std::string::npos);
+}
+
 TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitTwoAndFlushedRecorders) {
   test_support::ScratchDir dir("fem_tcl_uncaught");
   {
