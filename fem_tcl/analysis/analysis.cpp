@@ -158,7 +158,6 @@ void Analysis::setup() {
 void Analysis::form_tangent() {
   double* values = solver_->matrix().valuePtr();
   solver_->zero_values();
-  const domain::RayleighFactors& node_damping = domain_.rayleigh();
   Matrix8 ke;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     domain::Element& el = *elements_[e];
@@ -188,9 +187,9 @@ void Analysis::form_tangent() {
     }
   }
   if (c2_ != 0.0 || c3_ != 0.0) {
-    const double cm = c3_ + c2_ * node_damping.alpha_m;
     for (std::size_t n = 0; n < nodes_.size(); ++n) {
       if (!nodes_[n]->has_mass) continue;
+      const double cm = c3_ + c2_ * nodes_[n]->rayleigh_alpha_m;
       for (int d = 0; d < 2; ++d) {
         const int q = eq_[2 * n + d];
         if (q >= 0) values[diag_pos_[q]] += cm * nodes_[n]->mass[d];
@@ -221,14 +220,13 @@ void Analysis::form_tangent() {
 void Analysis::form_unbalance() {
   R_.setZero();
   const bool dynamic = config_.transient;
-  const double node_alpha = domain_.rayleigh().alpha_m;
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     const domain::Node& nd = *nodes_[n];
     for (int d = 0; d < 2; ++d) {
       const int q = eq_[2 * n + d];
       if (q < 0) continue;
       double r = nd.load[d];
-      if (dynamic && nd.has_mass) r -= nd.mass[d] * (nd.accel[d] + node_alpha * nd.vel[d]);
+      if (dynamic && nd.has_mass) r -= nd.mass[d] * (nd.accel[d] + nd.rayleigh_alpha_m * nd.vel[d]);
       R_[q] += r;
     }
   }

@@ -46,6 +46,7 @@ void Domain::clear() {
   nodes_.clear();
   equal_dofs_.clear();
   rayleigh_ = {};
+  regions_.clear();
   warned_ratio_ = warned_inverted_ = false;
   time_ = committed_time_ = 0.0;
   ground_accel_.setZero();
@@ -196,6 +197,12 @@ void Domain::compute_reactions() {
 void Domain::set_rayleigh(const RayleighFactors& f) {
   rayleigh_ = f;
   for (auto& [tag, e] : elements_) e->set_rayleigh(f);
+  for (auto& [tag, n] : nodes_) n->rayleigh_alpha_m = f.alpha_m;
+}
+
+const MeshRegion* Domain::find_region(int tag) const {
+  const auto it = regions_.find(tag);
+  return it == regions_.end() ? nullptr : &it->second;
 }
 
 void PlainPattern::apply(Domain& domain, double time) {

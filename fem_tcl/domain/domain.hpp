@@ -16,6 +16,11 @@ namespace fem::domain {
 /// `equalDOF retained constrained dofs..` (dofs 0-based).
 struct EqualDof { int retained; int constrained; std::vector<int> dofs; };
 
+/// `region` (OpenSees MeshRegion): a labelled set of nodes and elements, in the order given (no duplicates).
+struct MeshRegion {
+  std::vector<int> nodes, elements;
+};
+
 /// Whole-mesh distortion measures (not in OpenSees): the smallest corner det J (deformed configuration) and
 /// the smallest corner ratio det J / det J(reference), with the elements where they occur (tag 0: no element).
 struct MeshQuality {
@@ -85,7 +90,11 @@ class Domain {
   /// mesh quality, so the recorders and the once-only warnings see only the script's own analyses.
   void set_trial_commits(bool on) { trial_commits_ = on; }
   void flush_recorders();
+  /// `rayleigh`: the factors of every element and node of the domain now (later ones get none, as OpenSees).
   void set_rayleigh(const RayleighFactors& f);
+  /// Defines or replaces region `tag`.
+  void set_region(int tag, MeshRegion region) { regions_[tag] = std::move(region); }
+  const MeshRegion* find_region(int tag) const;
 
   // --- mesh distortion monitor (checked at every commit; one warning each on stderr) ---
   /// Current (trial) configuration; O(elements), no allocation.
@@ -103,6 +112,7 @@ class Domain {
   std::vector<std::pair<int, std::unique_ptr<Recorder>>> recorders_;
   int next_recorder_tag_ = 0;
   RayleighFactors rayleigh_;
+  std::map<int, MeshRegion> regions_;
   double time_ = 0.0;
   double committed_time_ = 0.0;
   Vector2 ground_accel_ = Vector2::Zero();

@@ -23,6 +23,9 @@ struct Node {
 
   Vector2 mass = Vector2::Zero();   ///< lumped nodal mass per dof (`mass`, `node -mass`)
   bool has_mass = false;
+  /// Mass-proportional Rayleigh factor of this node's mass (`rayleigh`, `region -rayleigh`; OpenSees
+  /// Node::alphaM): damping force alphaM m v.
+  double rayleigh_alpha_m = 0.0;
   Vector2 load = Vector2::Zero();   ///< applied nodal load of the current step (patterns, inertia of ground motion)
   Vector2 reaction = Vector2::Zero();
   std::array<bool, 2> fixed{false, false};  ///< homogeneous `fix` constraints

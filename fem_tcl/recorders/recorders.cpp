@@ -139,6 +139,12 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     } else if (is_node && args.flag("-nodeRange")) {
       const int a = args.integer("-nodeRange start"), b = args.integer("-nodeRange end");
       for (const auto& [tag, n] : domain.nodes()) if (tag >= a && tag <= b) tags.push_back(tag);
+    } else if (!is_mesh && args.flag("-region")) {  // OpenSees: the region's nodes / elements, in its order
+      const int r = args.integer("-region tag");
+      const domain::MeshRegion* region = domain.find_region(r);
+      if (region == nullptr) args.fail("region " + std::to_string(r) + " does not exist");
+      const std::vector<int>& t = is_node ? region->nodes : region->elements;
+      tags.insert(tags.end(), t.begin(), t.end());
     } else if (is_node && args.flag("-dof")) {
       have_dof = true;
       for (int d : read_integers(args)) {

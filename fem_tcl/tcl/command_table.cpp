@@ -23,6 +23,7 @@ constexpr std::array kCommands{
     CommandEntry{"sp", "sp nodeTag dof value", 1, cmd_sp},
     CommandEntry{"eleLoad", "eleLoad -ele t.. | -range a b -type -selfWeight xf yf", 0, cmd_ele_load},
     CommandEntry{"rayleigh", "rayleigh alphaM betaK betaK0 betaKc", 0, cmd_rayleigh},
+    CommandEntry{"region", "region regTag (-ele e.. | -eleOnly e.. | -eleRange a b | -eleOnlyRange a b | -node n.. | -nodeOnly n.. | -nodeRange a b | -nodeOnlyRange a b) <-rayleigh alphaM betaK betaK0 betaKc>", 1, cmd_region},
     CommandEntry{"setParameter", "setParameter -val v <-ele t.. | -eleRange a b> name", 0, cmd_set_parameter},
     CommandEntry{"updateMaterialStage", "updateMaterialStage -material tag -stage s", 0, cmd_update_material_stage},
     CommandEntry{"constraints", "constraints Plain|Transformation|Penalty <alphaS alphaM>", 0, cmd_constraints},
@@ -57,7 +58,7 @@ constexpr std::array kCommands{
     CommandEntry{"record", "record", 0, cmd_record},
     CommandEntry{"minJacobian", "minJacobian <-ratio>", 0, cmd_min_jacobian},
     CommandEntry{"meshQuality", "meshQuality <-warn ratio>", 0, cmd_mesh_quality},
-    CommandEntry{"recorder", "recorder Node|Element|MeshQuality -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b -dof d.. | -ele e.. | -eleRange a b) response..", 1, cmd_recorder},
+    CommandEntry{"recorder", "recorder Node|Element|MeshQuality -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b | -region r -dof d.. | -ele e.. | -eleRange a b | -region r) response..", 1, cmd_recorder},
     CommandEntry{"print", "print -JSON <-file f>", 0, cmd_print},
 };
 }  // namespace

@@ -45,6 +45,8 @@ std::string cmd_set_parameter(Context&, common::CommandArgs&);
 std::string cmd_update_material_stage(Context&, common::CommandArgs&);
 // meshing (block2d_command.cpp)
 std::string cmd_block2d(Context&, common::CommandArgs&);
+// regions of nodes and elements (region_command.cpp)
+std::string cmd_region(Context&, common::CommandArgs&);
 // analysis (analysis_commands.cpp)
 std::string cmd_constraints(Context&, common::CommandArgs&);
 std::string cmd_numberer(Context&, common::CommandArgs&);

@@ -8,6 +8,7 @@
 
 #include "fem_tcl/tcl/interpreter.hpp"
 #include "support/recorder_compare.hpp"
+#include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -182,7 +183,7 @@ TEST(TclCommands, VariableTransientRetriesAFailedStepWithASmallerStep) {
   // committed at t = 0.005. As the motion grows, steps keep failing until dt <= dtMin: the analysis then
   // returns the failure with the last converged state kept.
   Interpreter interp;
-  const std::string dir = testing::TempDir();
+  const std::string dir = test_support::fresh_scratch_folder("unit_fem_tcl_commands", "variable_dt").string();
   ASSERT_EQ(error_of(interp, std::string(kOneQuadUnderRisingLoad) + "recorder Node -file " + dir +
                                  "/variable_dt.out -time -node 3 -dof 1 disp\n" + R"tcl(
 test NormDispIncr 1e-7 1
