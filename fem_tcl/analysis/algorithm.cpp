@@ -66,7 +66,7 @@ bool newton(StepProblem& p, ConvergenceTest& test, AlgorithmWorkspace& ws, int& 
     p.update(dU);
     p.form_unbalance();
     ++iterations;
-    const TestResult r = test.test(dU, p.unbalance());
+    const TestResult r = test.test(p.tested_increment(dU), p.unbalance());
     if (r != TestResult::Continue) return r == TestResult::Converged;
   }
 }
@@ -92,7 +92,7 @@ bool krylov_newton(const AlgorithmConfig& config, StepProblem& p, ConvergenceTes
     ++iterations;
     // OpenSees' tests read the system's solution x, which for KrylovNewton is the plain solve r = A0^-1 R of
     // this iteration, not the accelerated increment dU applied (KrylovNewton::solveCurrentStep).
-    const TestResult result = test.test(r, p.unbalance());
+    const TestResult result = test.test(p.tested_increment(r), p.unbalance());
     if (result != TestResult::Continue) return result == TestResult::Converged;
     if (k >= m) {  // restart the subspace with a fresh tangent (one solve, on the fresh tangent only)
       k = 0;
@@ -147,7 +147,7 @@ bool newton_line_search(const AlgorithmConfig& config, StepProblem& p, Convergen
     }
     ++iterations;
     step = eta * dU;
-    const TestResult r = test.test(step, p.unbalance());
+    const TestResult r = test.test(p.tested_increment(step), p.unbalance());
     if (r != TestResult::Continue) return r == TestResult::Converged;
   }
 }

@@ -24,6 +24,9 @@ class StepProblem {
   virtual void solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) = 0;
   /// Applies a free-dof increment (and updates velocities/accelerations and element states).
   virtual void update(const Eigen::VectorXd& dU) = 0;
+  /// What the convergence test reads after update(`solved`): `solved` itself, unless the integrator applied
+  /// another increment (DisplacementControl: the correction plus its load-factor part, as OpenSees' setX).
+  virtual const Eigen::VectorXd& tested_increment(const Eigen::VectorXd& solved) const { return solved; }
   virtual int equations() const = 0;
 };
 

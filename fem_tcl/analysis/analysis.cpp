@@ -22,6 +22,7 @@ Analysis::Analysis(domain::Domain& domain, AnalysisConfig config)
   }
   solver_ = std::make_unique<LinearSolver>(kind);
   d_lambda_ = config_.integrator.d_lambda;
+  if (config_.integrator.type == IntegratorType::DisplacementControl) control_.emplace(config_.integrator);
 }
 
 void Analysis::setup() {
@@ -153,6 +154,7 @@ void Analysis::setup() {
   have_previous_ = false;
   forces_current_ = false;
   version_ = domain_.version();
+  if (control_) control_reference();
 }
 
 void Analysis::form_tangent() {
@@ -293,9 +295,61 @@ double Analysis::prescribed_value(const Prescribed& p) const {
 }
 
 void Analysis::update(const Eigen::VectorXd& dU) {
+  if (control_) control_update(dU);
+  else apply_free_increment(dU);
+}
+
+void Analysis::apply_free_increment(const Eigen::VectorXd& dU) {
   const int ndof = static_cast<int>(eq_.size());
   for (int i = 0; i < ndof; ++i) full_[i] = eq_[i] >= 0 ? dU[eq_[i]] : 0.0;
   apply_increment(full_);
+}
+
+void Analysis::control_reference() {
+  const IntegratorConfig& ic = config_.integrator;
+  const std::string where = "integrator DisplacementControl";
+  int equation = -2;
+  for (std::size_t n = 0; n < nodes_.size(); ++n)
+    if (nodes_[n]->tag == ic.control_node) equation = eq_[2 * n + static_cast<std::size_t>(ic.control_dof)];
+  if (equation == -2) throw common::InputError(where, "node " + std::to_string(ic.control_node) + " does not exist");
+  if (equation < 0) {
+    throw common::InputError(where, "node " + std::to_string(ic.control_node) + " dof " +
+                                        std::to_string(ic.control_dof + 1) + " is fixed or constrained");
+  }
+  // phat = R(lambda + 1) at the committed state (OpenSees DisplacementControl::domainChanged)
+  const double lambda = domain_.committed_time();
+  domain_.set_time(lambda + 1.0);
+  domain_.apply_loads(lambda + 1.0);
+  forces_current_ = false;
+  form_unbalance();
+  const Eigen::VectorXd phat = R_;
+  domain_.set_time(lambda);
+  domain_.apply_loads(lambda);
+  if (phat.isZero(0.0)) throw common::InputError(where, "zero reference load (no load grows with the load factor)");
+  control_->set_reference(phat, equation);
+  control_dUhat_.setZero(neq_);
+  control_increment_.setZero(neq_);
+}
+
+void Analysis::control_predictor() {
+  form_tangent();
+  solve(control_->reference_load(), control_dUhat_);
+  const double d_lambda = control_->predictor(control_dUhat_);
+  control_increment_ = d_lambda * control_dUhat_;
+  apply_free_increment(control_increment_);
+  const double lambda = step_start_time_ + d_lambda;
+  domain_.set_time(lambda);
+  domain_.apply_loads(lambda);
+}
+
+void Analysis::control_update(const Eigen::VectorXd& dUbar) {
+  solve(control_->reference_load(), control_dUhat_);  // with the factorization of this iteration
+  const double d_lambda = control_->corrector(dUbar, control_dUhat_);
+  control_increment_ = dUbar + d_lambda * control_dUhat_;
+  apply_free_increment(control_increment_);
+  const double lambda = domain_.time() + d_lambda;
+  domain_.set_time(lambda);
+  domain_.apply_loads(lambda);
 }
 
 void Analysis::apply_increment(const Eigen::VectorXd& full) {
@@ -303,6 +357,7 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
   const int nn = static_cast<int>(nodes_.size());
   switch (ic.type) {
     case IntegratorType::LoadControl:
+    case IntegratorType::DisplacementControl:
       for (int n = 0; n < nn; ++n) {
         for (int d = 0; d < 2; ++d) {
           nodes_[n]->disp[d] += full[2 * n + d];
@@ -378,6 +433,10 @@ void Analysis::new_step(double dt) {
       domain_.apply_loads(t);
       break;
     }
+    case IntegratorType::DisplacementControl:
+      c1_ = 1.0; c2_ = 0.0; c3_ = 0.0;
+      control_predictor();
+      break;
     case IntegratorType::Newmark:
     case IntegratorType::HHT: {
       const double alpha = ic.type == IntegratorType::HHT ? ic.alpha : 1.0;

@@ -12,6 +12,7 @@
 
 #include "fem_tcl/analysis/algorithm.hpp"
 #include "fem_tcl/analysis/convergence_test.hpp"
+#include "fem_tcl/analysis/displacement_control.hpp"
 #include "fem_tcl/analysis/integrator.hpp"
 #include "fem_tcl/analysis/linear_solver.hpp"
 #include "fem_tcl/domain/domain.hpp"
@@ -65,6 +66,9 @@ class Analysis final : public StepProblem {
   const Eigen::VectorXd& unbalance() const override { return R_; }
   void solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) override;
   void update(const Eigen::VectorXd& dU) override;
+  const Eigen::VectorXd& tested_increment(const Eigen::VectorXd& solved) const override {
+    return control_ ? control_increment_ : solved;
+  }
 
  private:
   struct Prescribed { int dof; const domain::LoadPattern* pattern; double value; };  ///< pattern null: fix
@@ -73,6 +77,7 @@ class Analysis final : public StepProblem {
   void setup();
   void new_step(double dt);
   void apply_increment(const Eigen::VectorXd& full);  // full-dof increment through the integrator
+  void apply_free_increment(const Eigen::VectorXd& dU);  // free-equation increment, through apply_increment
   void commit_step(double dt);
   /// One step of dt: setup, predictor, solve; the state is reverted (warning on stderr) when it fails.
   /// Returns 0 (converged, not yet committed) or -3; `iterations` counts the algorithm's iterations.
@@ -118,6 +123,14 @@ class Analysis final : public StepProblem {
   double dt_ = 0.0;
   double d_lambda_ = 0.0;
   int last_iterations_ = 1;
+  // DisplacementControl: the integrator, A^-1 phat, and the increment its last update applied
+  std::optional<DisplacementControl> control_;
+  Eigen::VectorXd control_dUhat_, control_increment_;
+  /// Applies the predictor (new_step) and each correction (update) of DisplacementControl.
+  void control_predictor();
+  void control_update(const Eigen::VectorXd& dUbar);
+  /// At a rebuild: the control dof's equation and the reference load phat = R(lambda + 1).
+  void control_reference();
   AnalysisStats stats_;
 };
 

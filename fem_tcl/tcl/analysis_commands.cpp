@@ -116,8 +116,8 @@ std::string cmd_analysis(Context& ctx, common::CommandArgs& args) {
   ctx.chain.variable_time_step = type == "VariableTransient";
   const analysis::AnalysisConfig config = complete_chain(ctx);
   if (config.transient == config.integrator.is_static()) {
-    args.fail(std::string("integrator ") + (config.transient ? "LoadControl is static" : "is transient") +
-              "; use " + (config.transient ? "Newmark, HHT or CentralDifference" : "LoadControl") +
+    args.fail(std::string("integrator ") + (config.transient ? "is static" : "is transient") +
+              "; use " + (config.transient ? "Newmark, HHT or CentralDifference" : "LoadControl or DisplacementControl") +
               " with analysis " + type);
   }
   mark_dirty(ctx);
@@ -147,8 +147,8 @@ std::string cmd_analyze(Context& ctx, common::CommandArgs& args) {
   if (ctx.analysis_dirty || !ctx.analysis) {
     const analysis::AnalysisConfig config = complete_chain(ctx);
     if (config.transient == config.integrator.is_static()) {
-      args.fail("the integrator does not match the analysis type (LoadControl needs Static; Newmark, HHT, "
-                "CentralDifference need Transient)");
+      args.fail("the integrator does not match the analysis type (LoadControl and DisplacementControl need Static; "
+                "Newmark, HHT, CentralDifference need Transient)");
     }
     ctx.analysis = std::make_unique<analysis::Analysis>(ctx.domain, config);
     ctx.analysis_dirty = false;

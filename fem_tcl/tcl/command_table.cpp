@@ -31,7 +31,7 @@ constexpr std::array kCommands{
     CommandEntry{"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM", 0, cmd_system},
     CommandEntry{"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter <printFlag>", 0, cmd_test},
     CommandEntry{"algorithm", "algorithm Linear|Newton|ModifiedNewton|KrylovNewton|NewtonLineSearch", 0, cmd_algorithm},
-    CommandEntry{"integrator", "integrator LoadControl dLambda | Newmark gamma beta | HHT alpha <gamma beta> | CentralDifference", 0, cmd_integrator},
+    CommandEntry{"integrator", "integrator LoadControl dLambda <Jd minLambda maxLambda> | DisplacementControl node dof dU <numIter dUmin dUmax> | Newmark gamma beta | HHT alpha <gamma beta> | CentralDifference", 0, cmd_integrator},
     CommandEntry{"analysis", "analysis Static|Transient|VariableTransient", 0, cmd_analysis},
     CommandEntry{"analyze", "analyze numSteps <dt> <dtMin dtMax Jd>", 0, cmd_analyze},
     CommandEntry{"strengthReduction", "strengthReduction -materials {tags} <-bracket Flo Fhi> <-tol dF> <-criterion displacement|convergence> <-displacementRatio r> <-displacementLimit d> <-steps n> <-maxCuts m> <-maxTrials k>", 0, cmd_strength_reduction},
