@@ -1,6 +1,7 @@
 // The analysis chain (constraints ... analysis), analyze, and time/stage control.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "fem_tcl/analysis/strength_reduction.hpp"
 #include "fem_tcl/tcl/commands.hpp"
@@ -243,7 +244,7 @@ std::string cmd_reset(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
-  const std::string what = args.word("what (recorders, recorder or loadPattern)");
+  const std::string what = args.word("what (recorders, recorder, loadPattern or sp)");
   if (what == "recorders") {
     ctx.domain.remove_recorders();
   } else if (what == "recorder") {
@@ -253,8 +254,37 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     const int tag = args.integer("pattern tag");
     if (!ctx.domain.remove_pattern(tag)) args.fail("load pattern " + std::to_string(tag) + " does not exist");
     ctx.analysis_dirty = true;
+  } else if (what == "sp") {
+    // OpenSees `remove sp nodeTag dofTag <patternTag>`: the fix on that dof (Domain::removeSP_Constraint),
+    // or the pattern's sp; the dof is free from the next step on, so the force it carried becomes unbalance
+    // (an excavation, a support taken away). Nothing to remove: OpenSees goes on quietly; fem_tcl warns.
+    const int node = args.integer("nodeTag");
+    const int dof = args.integer("dofTag");
+    if (dof < 1 || dof > 2) args.fail("expected dofTag 1 or 2, got " + std::to_string(dof));
+    std::optional<int> pattern;
+    if (!args.empty()) pattern = args.integer("patternTag");
+    args.expect_end();
+    domain::Node& n = ctx.domain.node(node, args.command());
+    bool removed = false;
+    if (!pattern) {
+      removed = n.fixed[static_cast<std::size_t>(dof - 1)];
+      n.fixed[static_cast<std::size_t>(dof - 1)] = false;
+    } else {
+      domain::LoadPattern* p = ctx.domain.find_pattern(*pattern);
+      if (!p) args.fail("load pattern " + std::to_string(*pattern) + " does not exist");
+      const auto before = p->prescribed.size();
+      std::erase_if(p->prescribed, [&](const domain::PrescribedDisp& sp) { return sp.node == node && sp.dof == dof - 1; });
+      removed = p->prescribed.size() != before;
+    }
+    if (!removed) {
+      std::cerr << "WARNING remove sp: node " << node << " dof " << dof << " has no sp constraint"
+                << (pattern ? " in pattern " + std::to_string(*pattern) : std::string()) << "; nothing removed\n";
+    }
+    ctx.domain.touch();
+    ctx.analysis_dirty = true;
+    return {};
   } else {
-    args.fail("unknown object '" + what + "' (recorders or loadPattern)");
+    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern or sp)");
   }
   args.expect_end();
   return {};

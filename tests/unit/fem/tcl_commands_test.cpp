@@ -4,6 +4,7 @@
 // "file:line: message" with exit status 2 (bad input) after flushing the recorders.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "fem_tcl/tcl/interpreter.hpp"
@@ -218,6 +219,36 @@ TEST(TclCommands, VariableTransientAnalyzeNeedsDtMinDtMaxAndJd) {
   EXPECT_NE(error_of(interp, "analyze 10 0.01").find("dtMin"), std::string::npos);
   EXPECT_NE(error_of(interp, "analyze 10 0.01 0.02 0.01 4").find("dtMin <= dtMax"), std::string::npos);
   EXPECT_NE(error_of(interp, "analyze 10 0.01 0.001 0.05 0").find("Jd >= 1"), std::string::npos);
+}
+
+// `remove sp nodeTag dofTag <patternTag>` (OpenSees Domain::removeSP_Constraint): the support is gone from
+// the next step on, so the force it carried moves the model (a support taken away, an excavation).
+TEST(TclCommands, RemoveSpFreesTheDofForTheNextStep) {
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kTwoElementModel) + R"tcl(
+fix 6 1 0
+timeSeries Constant 1
+pattern Plain 1 1 { load 6 1.0 0.0 }
+pattern Plain 2 1 { sp 3 1 0.0 }
+constraints Transformation; numberer Plain; system UmfPack; test NormDispIncr 1e-12 10; algorithm Newton
+integrator LoadControl 1.0; analysis Static
+analyze 1
+set held [nodeDisp 6 1]
+remove sp 6 1
+analyze 1
+set free [nodeDisp 6 1]
+set u3 [nodeDisp 3 1]
+remove sp 3 1 2
+analyze 1
+)tcl"), "");
+  EXPECT_EQ(std::stod(interp.eval("set held")), 0.0);
+  EXPECT_GT(std::stod(interp.eval("set free")), 1e-6);  // the load now pushes the free node
+  EXPECT_EQ(std::stod(interp.eval("set u3")), 0.0);     // still held by pattern 2's sp
+  EXPECT_GT(std::abs(std::stod(interp.eval("nodeDisp 3 1"))), 1e-6);
+  EXPECT_NE(error_of(interp, "remove sp 6 3").find("expected dofTag 1 or 2"), std::string::npos);
+  EXPECT_NE(error_of(interp, "remove sp 99 1").find("99"), std::string::npos);
+  EXPECT_NE(error_of(interp, "remove sp 6 1 7").find("load pattern 7 does not exist"), std::string::npos);
+  EXPECT_EQ(error_of(interp, "remove sp 6 1"), "");  // nothing left to remove: a warning, as OpenSees goes on
 }
 
 TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitTwoAndFlushedRecorders) {
