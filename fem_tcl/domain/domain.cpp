@@ -31,6 +31,12 @@ void Domain::add_pattern(std::unique_ptr<LoadPattern> pattern, const std::string
   ++version_;
 }
 
+bool Domain::remove_element(int tag) {
+  const bool removed = elements_.erase(tag) > 0;
+  if (removed) ++version_;
+  return removed;
+}
+
 bool Domain::remove_pattern(int tag) {
   const bool removed = patterns_.erase(tag) > 0;
   if (removed) ++version_;

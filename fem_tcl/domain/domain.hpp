@@ -43,6 +43,9 @@ class Domain {
     return next_recorder_tag_++;
   }
   bool remove_recorder(int tag);
+  /// `remove element tag`: the element and its materials go; its nodes stay (a node left without stiffness
+  /// makes the next system singular, named). Element recorders write zeros in its columns from then on.
+  bool remove_element(int tag);
   bool remove_pattern(int tag);
   void remove_recorders() { flush_recorders(); recorders_.clear(); }
   void clear();

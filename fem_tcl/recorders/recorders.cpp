@@ -82,13 +82,16 @@ void NodeRecorder::collect(std::vector<double>& row) {
   }
 }
 
-ElementRecorder::ElementRecorder(RecorderOptions options, std::vector<domain::Element*> elements,
-                                 std::vector<std::string> response)
-    : TextRecorder(std::move(options)), elements_(std::move(elements)), response_(std::move(response)) {}
+ElementRecorder::ElementRecorder(RecorderOptions options, domain::Domain& domain,
+                                 std::vector<std::pair<int, std::size_t>> elements, std::vector<std::string> response)
+    : TextRecorder(std::move(options)), domain_(domain), elements_(std::move(elements)), response_(std::move(response)) {}
 
 void ElementRecorder::collect(std::vector<double>& row) {
-  for (domain::Element* e : elements_) {
-    if (auto values = e->response(response_)) row.insert(row.end(), values->begin(), values->end());
+  for (const auto& [tag, width] : elements_) {
+    domain::Element* e = domain_.find_element(tag);
+    const auto values = e != nullptr ? e->response(response_) : std::nullopt;
+    if (values && values->size() == width) row.insert(row.end(), values->begin(), values->end());
+    else row.insert(row.end(), width, 0.0);
   }
 }
 
@@ -194,17 +197,18 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     }
     return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r);
   }
-  std::vector<domain::Element*> elements;
+  std::vector<std::pair<int, std::size_t>> elements;
   for (int t : tags) {
     domain::Element& e = domain.element(t, args.command());
-    if (!e.response(response)) {
+    const auto values = e.response(response);
+    if (!values) {
       std::string joined;
       for (const auto& w : response) joined += (joined.empty() ? "" : " ") + w;
       args.fail("element " + std::to_string(t) + " (" + e.type_name() + ") has no response '" + joined + "'");
     }
-    elements.push_back(&e);
+    elements.emplace_back(t, values->size());
   }
-  return std::make_unique<ElementRecorder>(opt, std::move(elements), std::move(response));
+  return std::make_unique<ElementRecorder>(opt, domain, std::move(elements), std::move(response));
 }
 
 }  // namespace fem::recorders

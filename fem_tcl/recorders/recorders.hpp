@@ -64,13 +64,18 @@ class NodeRecorder final : public TextRecorder {
 
 class ElementRecorder final : public TextRecorder {
  public:
-  ElementRecorder(RecorderOptions options, std::vector<domain::Element*> elements, std::vector<std::string> response);
+  /// `elements`: tags, each with the number of values its response gives.
+  ElementRecorder(RecorderOptions options, domain::Domain& domain, std::vector<std::pair<int, std::size_t>> elements,
+                  std::vector<std::string> response);
 
  protected:
+  /// Each element's response, looked up by tag: an element removed since (`remove element`) writes zeros,
+  /// so every row keeps the columns of the header's elements.
   void collect(std::vector<double>& row) override;
 
  private:
-  std::vector<domain::Element*> elements_;
+  domain::Domain& domain_;
+  std::vector<std::pair<int, std::size_t>> elements_;
   std::vector<std::string> response_;
 };
 

@@ -244,7 +244,7 @@ std::string cmd_reset(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
-  const std::string what = args.word("what (recorders, recorder, loadPattern or sp)");
+  const std::string what = args.word("what (recorders, recorder, loadPattern, element or sp)");
   if (what == "recorders") {
     ctx.domain.remove_recorders();
   } else if (what == "recorder") {
@@ -253,6 +253,11 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
   } else if (what == "loadPattern" || what == "pattern") {
     const int tag = args.integer("pattern tag");
     if (!ctx.domain.remove_pattern(tag)) args.fail("load pattern " + std::to_string(tag) + " does not exist");
+    ctx.analysis_dirty = true;
+  } else if (what == "element" || what == "ele") {
+    // OpenSees `remove element tag` (an excavation): gone from the next step on; its nodes stay.
+    const int tag = args.integer("element tag");
+    if (!ctx.domain.remove_element(tag)) args.fail("element " + std::to_string(tag) + " does not exist");
     ctx.analysis_dirty = true;
   } else if (what == "sp") {
     // OpenSees `remove sp nodeTag dofTag <patternTag>`: the fix on that dof (Domain::removeSP_Constraint),
@@ -284,7 +289,7 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     ctx.analysis_dirty = true;
     return {};
   } else {
-    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern or sp)");
+    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern, element or sp)");
   }
   args.expect_end();
   return {};

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "fem_tcl/tcl/interpreter.hpp"
 #include "support/recorder_compare.hpp"
@@ -249,6 +250,51 @@ analyze 1
   EXPECT_NE(error_of(interp, "remove sp 99 1").find("99"), std::string::npos);
   EXPECT_NE(error_of(interp, "remove sp 6 1 7").find("load pattern 7 does not exist"), std::string::npos);
   EXPECT_EQ(error_of(interp, "remove sp 6 1"), "");  // nothing left to remove: a warning, as OpenSees goes on
+}
+
+// `remove element tag` (an excavation): the element's weight and stiffness are gone from the next step on;
+// an Element recorder keeps its columns, written as zeros; a node left without stiffness is named.
+TEST(TclCommands, RemoveElementTakesItsWeightAndKeepsTheRecorderColumns) {
+  Interpreter interp;
+  const std::string dir = test_support::fresh_scratch_folder("unit_fem_tcl_commands", "remove_element").string();
+  ASSERT_EQ(error_of(interp, "model basic -ndm 2 -ndf 2\n"
+                             "node 1 0 0\nnode 2 1 0\nnode 3 1 1\nnode 4 0 1\nnode 5 1 2\nnode 6 0 2\n"
+                             "nDMaterial ElasticIsotropic 1 1000.0 0.0 2.0\n"
+                             "element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0 0.0 -10.0\n"
+                             "element SSPquad 2 4 3 5 6 1 PlaneStrain 1.0 0.0 -10.0\n"
+                             "fix 1 1 1\nfix 2 1 1\nfixX 0.0 1 0\nfixX 1.0 1 0\n"
+                             "recorder Element -file " + dir + "/s.out -ele 1 2 stress\n" + R"tcl(
+constraints Plain; numberer Plain; system UmfPack; test NormDispIncr 1e-12 10; algorithm Newton
+integrator LoadControl 1.0; analysis Static
+analyze 1
+set before [lindex [eleResponse 1 stress] 1]
+remove element 2
+set ok [analyze 1]
+)tcl"), "");
+  // node 5 and 6 hang free: the system is singular and the step fails, naming the node
+  EXPECT_LT(std::stod(interp.eval("set ok")), 0.0);
+  ASSERT_EQ(error_of(interp, "fix 5 1 1\nfix 6 1 1\nset ok [analyze 1]\nset after [lindex [eleResponse 1 stress] 1]\n"
+                             "remove recorders"),
+            "");
+  EXPECT_EQ(std::stod(interp.eval("set ok")), 0.0);
+  // syy of the lower (constant-stress) element: the force through it, the upper element's weight 10 and the
+  // half of its own lumped on its top nodes, 5; then only those 5
+  EXPECT_CLOSE(std::stod(interp.eval("set before")), -15.0, 1e-9, 0.0);
+  EXPECT_CLOSE(std::stod(interp.eval("set after")), -5.0, 1e-9, 0.0);
+  std::ifstream in(dir + "/s.out");
+  std::string line, last;
+  int rows = 0;
+  while (std::getline(in, line)) { ++rows; last = line; }
+  EXPECT_EQ(rows, 2);  // the failed step recorded nothing
+  std::istringstream words(last);
+  std::vector<double> v;
+  for (double x; words >> x;) v.push_back(x);
+  ASSERT_EQ(v.size(), 6u);
+  EXPECT_CLOSE(v[1], -5.0, 1e-9, 0.0);
+  EXPECT_EQ(v[3], 0.0);
+  EXPECT_EQ(v[4], 0.0);
+  EXPECT_EQ(v[5], 0.0);
+  EXPECT_NE(error_of(interp, "remove element 2").find("element 2 does not exist"), std::string::npos);
 }
 
 TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitTwoAndFlushedRecorders) {
