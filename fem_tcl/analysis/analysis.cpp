@@ -153,8 +153,8 @@ void Analysis::setup() {
   Ut_.setZero(ndof); Utd_.setZero(ndof); Utm1_.setZero(ndof);
   have_previous_ = false;
   forces_current_ = false;
+  if (control_) control_reference();  // before the version is taken: a failed reference is retried, never used
   version_ = domain_.version();
-  if (control_) control_reference();
 }
 
 void Analysis::form_tangent() {

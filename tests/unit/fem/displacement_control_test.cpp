@@ -99,6 +99,7 @@ TEST(DisplacementControl, BadInput) {
   EXPECT_NE(error_of(interp, "integrator DisplacementControl 3 2 -0.001 2 -0.01").find("dUmax"), std::string::npos);
   ASSERT_EQ(error_of(interp, "integrator DisplacementControl 1 2 -0.001\nanalysis Static"), "");
   EXPECT_NE(error_of(interp, "analyze 1").find("node 1 dof 2 is fixed or constrained"), std::string::npos);
+  EXPECT_NE(error_of(interp, "analyze 1").find("node 1 dof 2 is fixed or constrained"), std::string::npos);  // again
   ASSERT_EQ(error_of(interp, "integrator DisplacementControl 99 2 -0.001\nanalysis Static"), "");
   EXPECT_NE(error_of(interp, "analyze 1").find("node 99 does not exist"), std::string::npos);
   ASSERT_EQ(error_of(interp, "remove loadPattern 1\nintegrator DisplacementControl 3 2 -0.001\nanalysis Static"), "");
