@@ -403,6 +403,15 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     if (options.units == Units::kN && rho_model > 100)
       out.warnings.push_back("material '" + m.fem_name + "': density " + fmt(rho_model) +
                              " Mg/m3 looks like kg/m3; are the FEM files in SI (use --units SI)?");
+    // An associated DruckerPrager (rho_bar = rho) maps to psi = phi: plastic shearing then dilates at tan(psi)
+    // per unit shear, and where the mass is confined that dilation is resisted and loads it; soils dilate
+    // much less (0 for loose sand, roughly phi - 30 deg for dense; Bolton 1986).
+    constexpr double kLargeDilation = 20.0 * std::numbers::pi / 180.0;
+    if (m.type == MpmMaterial::Type::MohrCoulomb2D && m.dilation > kLargeDilation)
+      out.warnings.push_back("material '" + m.fem_name + "': dilation angle " + fmt(m.dilation * 180.0 / std::numbers::pi) +
+                             " deg (associated flow when it equals phi): confined plastic flow will dilate and load the "
+                             "mass; soils dilate far less; give a smaller one with --psi or --material " + m.fem_name +
+                             ":psi=...");
   }
   return out;
 }

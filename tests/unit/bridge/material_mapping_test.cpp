@@ -101,6 +101,25 @@ TEST_F(MaterialMapping, EachFemMaterialBecomesItsOwnMpmMaterial) {
   for (const auto& p : particles) EXPECT_EQ(p.material_id, static_cast<unsigned>(p.coord_x)) << "particle " << p.id;
 }
 
+TEST_F(MaterialMapping, AssociatedDruckerPragerWarnsOfItsDilation) {
+  // rho_bar = rho: the match gives psi = phi = 25.9 deg (> 20): a warning naming the material and --psi;
+  // the model's own rho_bar = 0.1 (psi 12.3 deg) and an associated one given --material 3:psi=0 give none.
+  const auto warned = [](const bridge::AssembledState& a) {
+    for (const auto& w : a.warnings)
+      if (w.find("material '3': dilation angle") != std::string::npos && w.find("--psi") != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_FALSE(warned(read()));
+  std::string model = kModel;
+  const std::string from = R"("rho": 0.2, "rho_bar": 0.1)";
+  model.replace(model.find(from), from.size(), R"("rho": 0.2, "rho_bar": 0.2)");
+  const auto associated = bridge::read_fem_state(bridge::parse_fem_model(model, "model.json"), options_);
+  EXPECT_CLOSE(associated.state.materials[2].dilation, associated.state.materials[2].friction, 0, 1e-12);
+  EXPECT_TRUE(warned(associated));
+  options_.per_material["3"].psi_deg = 0.0;
+  EXPECT_FALSE(warned(bridge::read_fem_state(bridge::parse_fem_model(model, "model.json"), options_)));
+}
+
 TEST_F(MaterialMapping, AFreshStartGivesEachParticleItsOwnMaterial) {
   // Elements of materials 2, 1, 2 (interleaved): the particles are grouped by material, the deck has one
   // file generator per material, and a fresh (non-resumed) start of it reads every particle back with
