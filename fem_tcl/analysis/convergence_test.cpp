@@ -10,18 +10,27 @@ std::string test_name(TestType type) {
     case TestType::NormDispIncr: return "NormDispIncr";
     case TestType::NormUnbalance: return "NormUnbalance";
     case TestType::EnergyIncr: return "EnergyIncr";
+    case TestType::RelativeNormDispIncr: return "RelativeNormDispIncr";
+    case TestType::RelativeNormUnbalance: return "RelativeNormUnbalance";
+    case TestType::RelativeEnergyIncr: return "RelativeEnergyIncr";
+    case TestType::FixedNumIter: return "FixedNumIter";
   }
   return "?";
 }
 
 TestConfig parse_test(common::CommandArgs& args) {
   TestConfig c;
-  const std::string type = args.word("type (NormDispIncr, NormUnbalance or EnergyIncr)");
-  if (type == "NormDispIncr") c.type = TestType::NormDispIncr;
-  else if (type == "NormUnbalance") c.type = TestType::NormUnbalance;
-  else if (type == "EnergyIncr") c.type = TestType::EnergyIncr;
-  else args.fail("unknown test type '" + type + "'");
-  c.tol = args.number("tol");
+  const std::string type = args.word("type (NormDispIncr, NormUnbalance, EnergyIncr, their Relative* forms or FixedNumIter)");
+  bool found = false;
+  for (TestType t : {TestType::NormDispIncr, TestType::NormUnbalance, TestType::EnergyIncr, TestType::RelativeNormDispIncr,
+                     TestType::RelativeNormUnbalance, TestType::RelativeEnergyIncr, TestType::FixedNumIter}) {
+    if (type == test_name(t)) {
+      c.type = t;
+      found = true;
+    }
+  }
+  if (!found) args.fail("unknown test type '" + type + "'");
+  c.tol = c.type == TestType::FixedNumIter ? 0.0 : args.number("tol");
   c.max_iter = args.integer("maxIter");
   if (!(c.tol >= 0.0)) args.fail("expected tol >= 0");
   if (c.max_iter < 1) args.fail("expected maxIter >= 1");
@@ -36,9 +45,25 @@ TestConfig parse_test(common::CommandArgs& args) {
 
 TestResult ConvergenceTest::test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R) {
   switch (config_.type) {
-    case TestType::NormDispIncr: norm_ = dU.norm(); break;
-    case TestType::NormUnbalance: norm_ = R.norm(); break;
-    case TestType::EnergyIncr: norm_ = 0.5 * std::abs(dU.dot(R)); break;
+    case TestType::NormDispIncr:
+    case TestType::RelativeNormDispIncr:
+    case TestType::FixedNumIter: norm_ = dU.norm(); break;
+    case TestType::NormUnbalance:
+    case TestType::RelativeNormUnbalance: norm_ = R.norm(); break;
+    case TestType::EnergyIncr:
+    case TestType::RelativeEnergyIncr: norm_ = 0.5 * std::abs(dU.dot(R)); break;
+  }
+  const bool relative = config_.type == TestType::RelativeNormDispIncr ||
+                        config_.type == TestType::RelativeNormUnbalance || config_.type == TestType::RelativeEnergyIncr;
+  if (relative) {  // OpenSees CTestRelative*: norm0 at the first iteration, then norm / norm0 (norm0 != 0)
+    if (iteration_ == 1) first_norm_ = norm_;
+    if (first_norm_ != 0.0) norm_ /= first_norm_;
+  }
+  if (config_.type == TestType::FixedNumIter) {  // OpenSees CTestFixedNumIter: done after maxIter iterations
+    if (norms_.size() < static_cast<std::size_t>(config_.max_iter)) norms_.push_back(norm_);
+    if (iteration_ >= config_.max_iter) return TestResult::Converged;
+    ++iteration_;
+    return TestResult::Continue;
   }
   if (norms_.size() < static_cast<std::size_t>(config_.max_iter)) norms_.push_back(norm_);
   if (config_.print_flag == 1 || config_.print_flag == 4) {

@@ -3,6 +3,8 @@
 //   NormDispIncr   ||dU||_2            <= tol
 //   NormUnbalance  ||R||_2             <= tol   (R: unbalance after the update)
 //   EnergyIncr     0.5 |dU . R|        <= tol   (R as above; OpenSees reads the SOE's current B)
+//   Relative*      the same norm over its value at the step's first iteration (1 there; CTestRelative*)
+//   FixedNumIter   converged after exactly maxIter iterations, whatever the norms (`test FixedNumIter maxIter`)
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -11,7 +13,11 @@
 
 namespace fem::analysis {
 
-enum class TestType { NormDispIncr, NormUnbalance, EnergyIncr };
+enum class TestType {
+  NormDispIncr, NormUnbalance, EnergyIncr,
+  RelativeNormDispIncr, RelativeNormUnbalance, RelativeEnergyIncr,
+  FixedNumIter
+};
 
 /// Outcome of one test: converged, iterate again, or maxIter reached without convergence.
 enum class TestResult { Converged, Continue, Failed };
@@ -23,7 +29,8 @@ struct TestConfig {
   int print_flag = 0;
 };
 
-/// `test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter <printFlag> <normType>` (args at the type word).
+/// `test NormDispIncr|NormUnbalance|EnergyIncr|RelativeNormDispIncr|RelativeNormUnbalance|RelativeEnergyIncr
+/// tol maxIter <printFlag> <normType>` or `test FixedNumIter maxIter <printFlag> <normType>` (args at the type word).
 TestConfig parse_test(common::CommandArgs& args);
 std::string test_name(TestType type);
 
@@ -33,6 +40,7 @@ class ConvergenceTest {
   void start() {
     iteration_ = 1;
     norms_.clear();
+    first_norm_ = 0.0;
   }
   TestResult test(const Eigen::VectorXd& dU, const Eigen::VectorXd& R);
   double last_norm() const { return norm_; }
@@ -45,6 +53,7 @@ class ConvergenceTest {
   TestConfig config_;
   int iteration_ = 1;
   double norm_ = 0.0;
+  double first_norm_ = 0.0;  ///< Relative*: the norm of the step's first iteration
   std::vector<double> norms_;
 };
 

@@ -29,7 +29,7 @@ constexpr std::array kCommands{
     CommandEntry{"constraints", "constraints Plain|Transformation|Penalty <alphaS alphaM>", 0, cmd_constraints},
     CommandEntry{"numberer", "numberer Plain|RCM|AMD", 0, cmd_numberer},
     CommandEntry{"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM", 0, cmd_system},
-    CommandEntry{"test", "test NormDispIncr|NormUnbalance|EnergyIncr tol maxIter <printFlag>", 0, cmd_test},
+    CommandEntry{"test", "test NormDispIncr|NormUnbalance|EnergyIncr|RelativeNormDispIncr|RelativeNormUnbalance|RelativeEnergyIncr tol maxIter <printFlag> <normType> | FixedNumIter maxIter <printFlag> <normType>", 0, cmd_test},
     CommandEntry{"algorithm", "algorithm Linear|Newton|ModifiedNewton|KrylovNewton|NewtonLineSearch", 0, cmd_algorithm},
     CommandEntry{"integrator", "integrator LoadControl dLambda <Jd minLambda maxLambda> | DisplacementControl node dof dU <numIter dUmin dUmax> | Newmark gamma beta | HHT alpha <gamma beta> | CentralDifference", 0, cmd_integrator},
     CommandEntry{"analysis", "analysis Static|Transient|VariableTransient", 0, cmd_analysis},

@@ -164,6 +164,39 @@ TEST(ConvergenceTest, DefinitionsAndIterationLimit) {
   EXPECT_DOUBLE_EQ(unbalance.last_norm(), std::sqrt(5.0));
 }
 
+TEST(ConvergenceTest, RelativeFormsAndFixedNumIter) {
+  // OpenSees CTestRelativeNormDispIncr & co.: the norm over the first iteration's (1 at the first iteration).
+  Eigen::VectorXd dU(2), R(2);
+  dU << 3.0, 4.0;
+  R << 1.0, -2.0;
+  fem::analysis::ConvergenceTest rel({fem::analysis::TestType::RelativeNormDispIncr, 0.1, 5, 0});
+  rel.start();
+  EXPECT_EQ(rel.test(dU, R), fem::analysis::TestResult::Continue);
+  EXPECT_DOUBLE_EQ(rel.last_norm(), 1.0);
+  EXPECT_EQ(rel.test(0.2 * dU, R), fem::analysis::TestResult::Continue);
+  EXPECT_DOUBLE_EQ(rel.last_norm(), 0.2);
+  EXPECT_EQ(rel.test(0.05 * dU, R), fem::analysis::TestResult::Converged);
+  rel.start();  // a new step measures against its own first iteration
+  EXPECT_EQ(rel.test(0.05 * dU, R), fem::analysis::TestResult::Continue);
+  fem::analysis::ConvergenceTest rel_r({fem::analysis::TestType::RelativeNormUnbalance, 0.5, 5, 0});
+  rel_r.start();
+  rel_r.test(dU, R);
+  rel_r.test(dU, 0.25 * R);
+  EXPECT_DOUBLE_EQ(rel_r.last_norm(), 0.25);
+  // FixedNumIter: exactly maxIter iterations, converged whatever the norms
+  fem::analysis::ConvergenceTest fixed({fem::analysis::TestType::FixedNumIter, 0.0, 3, 0});
+  fixed.start();
+  EXPECT_EQ(fixed.test(dU, R), fem::analysis::TestResult::Continue);
+  EXPECT_EQ(fixed.test(1e-30 * dU, R), fem::analysis::TestResult::Continue);
+  EXPECT_EQ(fixed.test(1e30 * dU, R), fem::analysis::TestResult::Converged);
+  common::CommandArgs f("test", "", {"FixedNumIter", "4"});
+  EXPECT_EQ(fem::analysis::parse_test(f).max_iter, 4);
+  common::CommandArgs r("test", "", {"RelativeEnergyIncr", "1e-6", "10", "0", "2"});
+  EXPECT_EQ(fem::analysis::parse_test(r).type, fem::analysis::TestType::RelativeEnergyIncr);
+  common::CommandArgs bad("test", "", {"NormDispAndUnbalance", "1e-6", "1e-6", "10"});
+  EXPECT_THROW(fem::analysis::parse_test(bad), common::InputError);
+}
+
 TEST(Integrator, HHTDefaultsAndBadInput) {
   common::CommandArgs hht("integrator", "", {"HHT", "0.9"});
   const auto c = fem::analysis::parse_integrator(hht);
