@@ -67,7 +67,9 @@ std::string cmd_constraints(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_numberer(Context& ctx, common::CommandArgs& args) {
-  const std::string type = args.word("type (Plain, RCM or AMD)");
+  std::string type = args.word("type (Plain, RCM, AMD, ParallelPlain or ParallelRCM)");
+  // OpenSees' Parallel* numberers number a sequential model as the plain ones do
+  if (type == "ParallelPlain" || type == "ParallelRCM") type = type.substr(8);
   if (type != "Plain" && type != "RCM" && type != "AMD") args.fail("unknown numberer '" + type + "'");
   args.expect_end();
   ctx.chain.numberer = type;

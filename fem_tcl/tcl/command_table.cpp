@@ -27,7 +27,7 @@ constexpr std::array kCommands{
     CommandEntry{"setParameter", "setParameter -val v <-ele t.. | -eleRange a b> name", 0, cmd_set_parameter},
     CommandEntry{"updateMaterialStage", "updateMaterialStage -material tag -stage s", 0, cmd_update_material_stage},
     CommandEntry{"constraints", "constraints Plain|Transformation|Penalty <alphaS alphaM>", 0, cmd_constraints},
-    CommandEntry{"numberer", "numberer Plain|RCM|AMD", 0, cmd_numberer},
+    CommandEntry{"numberer", "numberer Plain|RCM|AMD|ParallelPlain|ParallelRCM", 0, cmd_numberer},
     CommandEntry{"system", "system BandGeneral|BandSPD|ProfileSPD|SparseGeneral|UmfPack|FullGeneral|SparseSYM", 0, cmd_system},
     CommandEntry{"test", "test NormDispIncr|NormUnbalance|EnergyIncr|RelativeNormDispIncr|RelativeNormUnbalance|RelativeEnergyIncr tol maxIter <printFlag> <normType> | FixedNumIter maxIter <printFlag> <normType>", 0, cmd_test},
     CommandEntry{"algorithm", "algorithm Linear|Newton|ModifiedNewton|KrylovNewton|NewtonLineSearch", 0, cmd_algorithm},

@@ -60,6 +60,8 @@ TEST(TclCommands, UnknownCommandOptionAndTypes) {
   EXPECT_NE(error_of(interp, "element SSPquad 9 1 2 5 4 1 PlaneStrainX 1.0").find("PlaneStrain or PlaneStress"),
             std::string::npos);
   EXPECT_NE(error_of(interp, "system Magic").find("unknown system 'Magic'"), std::string::npos);
+  EXPECT_EQ(error_of(interp, "numberer ParallelRCM"), "");  // OpenSees' parallel numberers, on one process
+  EXPECT_NE(error_of(interp, "numberer ParallelMetis").find("unknown numberer 'ParallelMetis'"), std::string::npos);
   EXPECT_NE(error_of(interp, "algorithm Newtonian").find("unknown algorithm"), std::string::npos);
 }
 
