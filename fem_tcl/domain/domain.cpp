@@ -37,6 +37,20 @@ bool Domain::remove_element(int tag) {
   return removed;
 }
 
+bool Domain::remove_node(int tag, const std::string& where) {
+  const auto it = nodes_.find(tag);
+  if (it == nodes_.end()) return false;
+  for (const auto& [etag, e] : elements_)
+    for (int a = 0; a < e->num_nodes(); ++a)
+      if (e->nodes()[a] == it->second.get())
+        throw common::InputError(where, "node " + std::to_string(tag) + " is a node of element " + std::to_string(etag) +
+                                            "; remove the element first");
+  std::erase_if(equal_dofs_, [&](const EqualDof& c) { return c.retained == tag || c.constrained == tag; });
+  nodes_.erase(it);
+  ++version_;
+  return true;
+}
+
 bool Domain::remove_pattern(int tag) {
   const bool removed = patterns_.erase(tag) > 0;
   if (removed) ++version_;

@@ -46,6 +46,9 @@ class Domain {
   /// `remove element tag`: the element and its materials go; its nodes stay (a node left without stiffness
   /// makes the next system singular, named). Element recorders write zeros in its columns from then on.
   bool remove_element(int tag);
+  /// `remove node tag`: only a node no element uses (throws common::InputError naming one that does); its
+  /// equalDOF ties, loads and sp go with it. Node recorders write zeros in its columns from then on.
+  bool remove_node(int tag, const std::string& where);
   bool remove_pattern(int tag);
   void remove_recorders() { flush_recorders(); recorders_.clear(); }
   void clear();

@@ -60,7 +60,7 @@ void TextRecorder::flush() {
   check_stream("writing");
 }
 
-NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<domain::Node*> nodes,
+NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<int> nodes,
                            std::vector<int> dofs, NodeResponse response)
     : TextRecorder(std::move(options)), domain_(domain), nodes_(std::move(nodes)), dofs_(std::move(dofs)),
       response_(response) {}
@@ -68,7 +68,12 @@ NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std:
 void NodeRecorder::collect(std::vector<double>& row) {
   if (dofs_.empty()) return;
   if (response_ == NodeResponse::Reaction) domain_.compute_reactions();
-  for (const domain::Node* n : nodes_) {
+  for (int tag : nodes_) {
+    const domain::Node* n = domain_.find_node(tag);
+    if (n == nullptr) {
+      row.insert(row.end(), dofs_.size(), 0.0);
+      continue;
+    }
     const domain::Vector2* v = nullptr;
     switch (response_) {
       case NodeResponse::Disp: v = &n->disp; break;
@@ -189,8 +194,11 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     else if (w == "unbalance") r = NodeResponse::Unbalance;
     else args.fail("unknown node response '" + w + "' (disp, vel, accel, incrDisp, reaction or unbalance)");
     if (response.size() > 1) args.fail("unexpected argument '" + response[1] + "' after the response");
-    std::vector<domain::Node*> nodes;
-    for (int t : tags) nodes.push_back(&domain.node(t, args.command()));
+    std::vector<int> nodes;
+    for (int t : tags) {
+      domain.node(t, args.command());  // must exist now
+      nodes.push_back(t);
+    }
     if (!have_dof) {
       std::cerr << "WARNING recorder Node -file " << opt.path
                 << ": no -dof given, so nothing will be written (as OpenSees); add e.g. -dof 1 2\n";

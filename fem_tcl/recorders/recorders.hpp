@@ -49,15 +49,16 @@ enum class NodeResponse { Disp, Vel, Accel, IncrDisp, Reaction, Unbalance };
 
 class NodeRecorder final : public TextRecorder {
  public:
-  NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<domain::Node*> nodes,
-               std::vector<int> dofs, NodeResponse response);
+  NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<int> nodes, std::vector<int> dofs,
+               NodeResponse response);
 
  protected:
+  /// Each node looked up by tag: a node removed since (`remove node`) writes zeros in its columns.
   void collect(std::vector<double>& row) override;
 
  private:
   domain::Domain& domain_;
-  std::vector<domain::Node*> nodes_;
+  std::vector<int> nodes_;
   std::vector<int> dofs_;  ///< 0-based
   NodeResponse response_;
 };

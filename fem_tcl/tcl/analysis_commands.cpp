@@ -246,7 +246,7 @@ std::string cmd_reset(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
-  const std::string what = args.word("what (recorders, recorder, loadPattern, element or sp)");
+  const std::string what = args.word("what (recorders, recorder, loadPattern, element, node or sp)");
   if (what == "recorders") {
     ctx.domain.remove_recorders();
   } else if (what == "recorder") {
@@ -260,6 +260,11 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     // OpenSees `remove element tag` (an excavation): gone from the next step on; its nodes stay.
     const int tag = args.integer("element tag");
     if (!ctx.domain.remove_element(tag)) args.fail("element " + std::to_string(tag) + " does not exist");
+    ctx.analysis_dirty = true;
+  } else if (what == "node") {
+    // OpenSees `remove node tag`: after its elements (an excavation's free nodes)
+    const int tag = args.integer("node tag");
+    if (!ctx.domain.remove_node(tag, args.command())) args.fail("node " + std::to_string(tag) + " does not exist");
     ctx.analysis_dirty = true;
   } else if (what == "sp") {
     // OpenSees `remove sp nodeTag dofTag <patternTag>`: the fix on that dof (Domain::removeSP_Constraint),
@@ -291,7 +296,7 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     ctx.analysis_dirty = true;
     return {};
   } else {
-    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern, element or sp)");
+    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern, element, node or sp)");
   }
   args.expect_end();
   return {};

@@ -41,7 +41,7 @@ constexpr std::array kCommands{
     CommandEntry{"wipe", "wipe", 0, cmd_wipe},
     CommandEntry{"wipeAnalysis", "wipeAnalysis", 0, cmd_wipe_analysis},
     CommandEntry{"reset", "reset", 0, cmd_reset},
-    CommandEntry{"remove", "remove recorders | recorder tag | loadPattern tag | element tag | sp nodeTag dofTag <patternTag>", 1, cmd_remove},
+    CommandEntry{"remove", "remove recorders | recorder tag | loadPattern tag | element tag | node tag | sp nodeTag dofTag <patternTag>", 1, cmd_remove},
     CommandEntry{"nodeDisp", "nodeDisp nodeTag <dof>", 1, cmd_node_disp},
     CommandEntry{"nodeVel", "nodeVel nodeTag <dof>", 1, cmd_node_vel},
     CommandEntry{"nodeAccel", "nodeAccel nodeTag <dof>", 1, cmd_node_accel},

@@ -299,6 +299,38 @@ set ok [analyze 1]
   EXPECT_NE(error_of(interp, "remove element 2").find("element 2 does not exist"), std::string::npos);
 }
 
+// `remove node tag` after its elements: the free nodes of an excavation go, so the next step runs; a Node
+// recorder writes zeros in its columns; a node an element still uses cannot go.
+TEST(TclCommands, RemoveNodeAfterItsElements) {
+  Interpreter interp;
+  const std::string dir = test_support::fresh_scratch_folder("unit_fem_tcl_commands", "remove_node").string();
+  ASSERT_EQ(error_of(interp, "model basic -ndm 2 -ndf 2\n"
+                             "node 1 0 0\nnode 2 1 0\nnode 3 1 1\nnode 4 0 1\nnode 5 1 2\nnode 6 0 2\n"
+                             "nDMaterial ElasticIsotropic 1 1000.0 0.0 2.0\n"
+                             "element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0 0.0 -10.0\n"
+                             "element SSPquad 2 4 3 5 6 1 PlaneStrain 1.0 0.0 -10.0\n"
+                             "fix 1 1 1\nfix 2 1 1\nfixX 0.0 1 0\nfixX 1.0 1 0\nequalDOF 5 6 2\n"
+                             "recorder Node -file " + dir + "/u.out -node 3 5 -dof 2 disp\n" + R"tcl(
+constraints Transformation; numberer Plain; system UmfPack; test NormDispIncr 1e-12 10; algorithm Newton
+integrator LoadControl 1.0; analysis Static
+analyze 1
+remove element 2
+remove node 5
+remove node 6
+set ok [analyze 1]
+remove recorders
+)tcl"), "");
+  EXPECT_EQ(std::stod(interp.eval("set ok")), 0.0);
+  EXPECT_NE(error_of(interp, "remove node 3").find("node 3 is a node of element 1"), std::string::npos);
+  EXPECT_NE(error_of(interp, "remove node 5").find("node 5 does not exist"), std::string::npos);
+  std::ifstream in(dir + "/u.out");
+  double u3a = 0, u5a = 0, u3b = 0, u5b = 1;
+  ASSERT_TRUE(in >> u3a >> u5a >> u3b >> u5b);
+  EXPECT_LT(u5a, u3a);         // the top settles more than the middle under both weights
+  EXPECT_GT(u3b, u3a);         // the middle rises once the upper element is gone
+  EXPECT_EQ(u5b, 0.0);         // the removed node's column
+}
+
 TEST(FemTclExecutable, UncaughtErrorGivesFileLineMessageExitTwoAndFlushedRecorders) {
   test_support::ScratchDir dir("fem_tcl_uncaught");
   {
