@@ -74,6 +74,29 @@ TEST(StripFooting, LoadSteppingDoesNotChangeTheCollapsePressure) {
   EXPECT_NEAR(coarse, fine, 0.01 * fine);
 }
 
+// A flexible footing (uniform pressure) taken to its collapse pressure by `integrator DisplacementControl` on its
+// centre node: the pressure levels off just above (2 + pi) c while the centre keeps settling, where load control
+// (the same pattern, LoadControl) must guess the load and sees the settlement run away near the limit
+// (n = 8: 0.09 b at q = 5.4 c, 0.61 b at 6 c). Measured, n = 8, 20 steps to 0.05 b: q/c = 5.30 (+3 %), +0.9 % over
+// the last quarter of the settlement (the SSPquad's elastic hourglass stiffness keeps it rising slowly).
+TEST(StripFooting, FlexibleFootingUnderDisplacementControlLevelsOffAtPrandtl) {
+  std::vector<double> q, u;
+  for (const std::string& line : run_footing("8 SSPquad flexible-dc 20")) {
+    const auto qc = line.find("q/c "), uy = line.find("centre uy ");
+    if (line.rfind("step ", 0) != 0 || qc == std::string::npos || uy == std::string::npos) continue;
+    q.push_back(std::strtod(line.c_str() + qc + 4, nullptr));
+    u.push_back(std::strtod(line.c_str() + uy + 10, nullptr));
+  }
+  ASSERT_EQ(q.size(), 20u);
+  for (std::size_t k = 0; k < u.size(); ++k) EXPECT_NEAR(u[k], -0.0025 * static_cast<double>(k + 1), 1e-12);
+  for (std::size_t k = 1; k < q.size(); ++k) EXPECT_GT(q[k], q[k - 1]);  // hardening only by the mesh
+  std::printf("flexible footing, displacement control: q/c %.4f at 0.05 b (Prandtl %.4f), %.4f at 0.0375 b\n",
+              q.back(), kPrandtl, q[14]);
+  EXPECT_GT(q.back(), kPrandtl);
+  EXPECT_LT(q.back(), 1.05 * kPrandtl);
+  EXPECT_LT(q.back() - q[14], 0.02 * q.back());  // levelled off
+}
+
 // Full Newton on the consistent tangent of the Tresca return (constitutive/mohr_coulomb: face and edge returns)
 // converges quadratically on this plastic boundary-value problem once in the asymptotic range (de Souza Neto,
 // Peric & Owen 2008, sec. 4.3 and 7.4; Simo & Taylor 1985, CMAME 48:101): with r_k the unbalance norm after

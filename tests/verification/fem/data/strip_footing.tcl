@@ -4,8 +4,9 @@
 # Usage: fem_tcl strip_footing.tcl ?n? ?element? ?footing? ?steps? ?algorithm? ?printFlag?
 #   n        elements across the footing half-width b = 1 m (default 4); the domain is 5 b wide and 5 b deep
 #   element  SSPquad (default) or quad
-#   footing  smooth (rigid, uy prescribed, ux free: default), rough (rigid, ux = 0 too) or flexible
-#            (uniform pressure, load control; stops at the last converged load)
+#   footing  smooth (rigid, uy prescribed, ux free: default), rough (rigid, ux = 0 too), flexible
+#            (uniform pressure, load control; stops at the last converged load) or flexible-dc (uniform pressure,
+#            `integrator DisplacementControl` on the centre node: its settlement grows by 0.05 b / steps a step)
 #   steps    load / displacement steps (default 40)
 #   algorithm NewtonLineSearch (default) or any other `algorithm` type; printFlag: the test's (default 0)
 # Prints "q/c <value>" for each step (footing pressure over c, positive in compression) and "limit q/c <value>"
@@ -55,7 +56,8 @@ set top [expr {$ny * ($nx + 1)}]
 set fnodes {}
 for {set i 0} {$i <= $n} {incr i} { lappend fnodes [expr {$top + $i + 1}] }
 timeSeries Linear 1
-if {$footing eq "flexible"} {
+set flexible [expr {$footing eq "flexible" || $footing eq "flexible-dc"}]
+if {$flexible} {
     # uniform pressure q = lambda * 6 c (beyond the limit), consistent nodal loads
     set q [expr {6.0 * $c}]
     pattern Plain 1 1 {
@@ -79,13 +81,17 @@ numberer RCM
 system UmfPack
 test NormUnbalance 1.0e-8 30 $printFlag
 algorithm $alg
-integrator LoadControl [expr {1.0 / $nsteps}]
+if {$footing eq "flexible-dc"} {
+    integrator DisplacementControl [lindex $fnodes 0] 2 [expr {-0.05 * $b / $nsteps}]
+} else {
+    integrator LoadControl [expr {1.0 / $nsteps}]
+}
 analysis Static
 set qLast 0.0
 for {set s 1} {$s <= $nsteps} {incr s} {
     set ok [analyze 1]
     if {$ok != 0} { puts stdout "step $s failed"; break }
-    if {$footing eq "flexible"} {
+    if {$flexible} {
         set qc [expr {[getLoadFactor 1] * 6.0}]
     } else {
         reactions
@@ -94,6 +100,6 @@ for {set s 1} {$s <= $nsteps} {incr s} {
         set qc [expr {-$F / ($b * $c)}]
     }
     set qLast $qc
-    puts stdout "step $s iterations [testIter] q/c $qc"
+    puts stdout "step $s iterations [testIter] q/c $qc centre uy [nodeDisp [lindex $fnodes 0] 2]"
 }
 puts stdout "limit q/c $qLast"
