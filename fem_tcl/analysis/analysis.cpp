@@ -532,6 +532,12 @@ void Analysis::commit_step(double dt) {
   domain_.commit();
 }
 
+void Analysis::commit_converged_step(double dt, int iterations) {
+  last_iterations_ = std::max(iterations, 1);
+  ++stats_.steps;
+  commit_step(dt);
+}
+
 int Analysis::try_step(double dt, int& iterations) {
   iterations = 0;
   try {
@@ -562,9 +568,7 @@ int Analysis::analyze(int steps, double dt) {
   for (int s = 0; s < steps; ++s) {
     int iterations = 0;
     if (const int result = try_step(dt, iterations); result < 0) return result;
-    last_iterations_ = std::max(iterations, 1);
-    ++stats_.steps;
-    commit_step(dt);
+    commit_converged_step(dt, iterations);
   }
   stats_.factorizations = solver_->factorizations();
   return 0;
@@ -579,9 +583,7 @@ int Analysis::analyze_variable(int steps, double dt, double dt_min, double dt_ma
     int iterations = 0;
     const int result = try_step(current, iterations);
     if (result == 0) {
-      last_iterations_ = std::max(iterations, 1);
-      ++stats_.steps;
-      commit_step(current);
+      commit_converged_step(current, iterations);
       done += current;
     } else if (current <= dt_min) {
       std::cerr << "WARNING VariableTimeStepDirectIntegrationAnalysis::analyze() - failed at time "

@@ -82,6 +82,8 @@ class Analysis final : public StepProblem {
   /// One step of dt: setup, predictor, solve; the state is reverted (warning on stderr) when it fails.
   /// Returns 0 (converged, not yet committed) or -3; `iterations` counts the algorithm's iterations.
   int try_step(double dt, int& iterations);
+  /// After a converged try_step: its iterations (LoadControl's Jd) and the step counted, then the commit.
+  void commit_converged_step(double dt, int iterations);
   void impose_prescribed();
   /// Trial strains of every element from the nodes' trial displacements (vector loop, no map walk); in a
   /// transient analysis each element's unbalance contribution is formed in the same pass (element_force_).

@@ -59,13 +59,12 @@ TestResult ConvergenceTest::test(const Eigen::VectorXd& dU, const Eigen::VectorX
     if (iteration_ == 1) first_norm_ = norm_;
     if (first_norm_ != 0.0) norm_ /= first_norm_;
   }
+  if (norms_.size() < static_cast<std::size_t>(config_.max_iter)) norms_.push_back(norm_);
   if (config_.type == TestType::FixedNumIter) {  // OpenSees CTestFixedNumIter: done after maxIter iterations
-    if (norms_.size() < static_cast<std::size_t>(config_.max_iter)) norms_.push_back(norm_);
     if (iteration_ >= config_.max_iter) return TestResult::Converged;
     ++iteration_;
     return TestResult::Continue;
   }
-  if (norms_.size() < static_cast<std::size_t>(config_.max_iter)) norms_.push_back(norm_);
   if (config_.print_flag == 1 || config_.print_flag == 4) {
     std::cerr << "CTest" << test_name(config_.type) << "::test() - iteration: " << iteration_
               << " current Norm: " << norm_ << " (max: " << config_.tol << ")\n";

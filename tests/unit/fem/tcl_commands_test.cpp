@@ -254,17 +254,30 @@ analyze 1
   EXPECT_EQ(error_of(interp, "remove sp 6 1"), "");  // nothing left to remove: a warning, as OpenSees goes on
 }
 
+// A column of two stacked 1 m SSPquads under their own weight (10 each), base fixed, sides on rollers.
+constexpr const char* kTwoStackedElements = R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0
+node 2 1 0
+node 3 1 1
+node 4 0 1
+node 5 1 2
+node 6 0 2
+nDMaterial ElasticIsotropic 1 1000.0 0.0 2.0
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0 0.0 -10.0
+element SSPquad 2 4 3 5 6 1 PlaneStrain 1.0 0.0 -10.0
+fix 1 1 1
+fix 2 1 1
+fixX 0.0 1 0
+fixX 1.0 1 0
+)tcl";
+
 // `remove element tag` (an excavation): the element's weight and stiffness are gone from the next step on;
 // an Element recorder keeps its columns, written as zeros; a node left without stiffness is named.
 TEST(TclCommands, RemoveElementTakesItsWeightAndKeepsTheRecorderColumns) {
   Interpreter interp;
   const std::string dir = test_support::fresh_scratch_folder("unit_fem_tcl_commands", "remove_element").string();
-  ASSERT_EQ(error_of(interp, "model basic -ndm 2 -ndf 2\n"
-                             "node 1 0 0\nnode 2 1 0\nnode 3 1 1\nnode 4 0 1\nnode 5 1 2\nnode 6 0 2\n"
-                             "nDMaterial ElasticIsotropic 1 1000.0 0.0 2.0\n"
-                             "element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0 0.0 -10.0\n"
-                             "element SSPquad 2 4 3 5 6 1 PlaneStrain 1.0 0.0 -10.0\n"
-                             "fix 1 1 1\nfix 2 1 1\nfixX 0.0 1 0\nfixX 1.0 1 0\n"
+  ASSERT_EQ(error_of(interp, std::string(kTwoStackedElements) +
                              "recorder Element -file " + dir + "/s.out -ele 1 2 stress\n" + R"tcl(
 constraints Plain; numberer Plain; system UmfPack; test NormDispIncr 1e-12 10; algorithm Newton
 integrator LoadControl 1.0; analysis Static
@@ -304,12 +317,7 @@ set ok [analyze 1]
 TEST(TclCommands, RemoveNodeAfterItsElements) {
   Interpreter interp;
   const std::string dir = test_support::fresh_scratch_folder("unit_fem_tcl_commands", "remove_node").string();
-  ASSERT_EQ(error_of(interp, "model basic -ndm 2 -ndf 2\n"
-                             "node 1 0 0\nnode 2 1 0\nnode 3 1 1\nnode 4 0 1\nnode 5 1 2\nnode 6 0 2\n"
-                             "nDMaterial ElasticIsotropic 1 1000.0 0.0 2.0\n"
-                             "element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0 0.0 -10.0\n"
-                             "element SSPquad 2 4 3 5 6 1 PlaneStrain 1.0 0.0 -10.0\n"
-                             "fix 1 1 1\nfix 2 1 1\nfixX 0.0 1 0\nfixX 1.0 1 0\nequalDOF 5 6 2\n"
+  ASSERT_EQ(error_of(interp, std::string(kTwoStackedElements) + "equalDOF 5 6 2\n"
                              "recorder Node -file " + dir + "/u.out -node 3 5 -dof 2 disp\n" + R"tcl(
 constraints Transformation; numberer Plain; system UmfPack; test NormDispIncr 1e-12 10; algorithm Newton
 integrator LoadControl 1.0; analysis Static
