@@ -141,6 +141,10 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
       nc.mu = c.friction;
     }
   }
+  touching_.assign(constraints_.size(), 1);
+  for (std::size_t node = 0; node < nodes_; ++node)
+    if (const std::int32_t c = constraint_of_[node]; c >= 0 && constraints_[static_cast<std::size_t>(c)].one_sided())
+      contact_nodes_.emplace_back(node, static_cast<std::size_t>(c));
 
   // Particles.
   const std::size_t n = deck.particles.size();
@@ -397,6 +401,7 @@ void Engine::step() {
   gx_ = b.x();
   gy_ = b.y();
   loads_.set_time(time());
+  find_wall_contacts();
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
 #pragma omp parallel num_threads(threads_)
   {
@@ -588,7 +593,8 @@ void Engine::reduce_row(int j, GridFields summed) {
   }
 }
 
-/// Nodal velocity = momentum / mass, then the velocity constraints (CB-Geo Node::compute_velocity).
+/// Nodal velocity = momentum / mass, then the velocity constraints (CB-Geo Node::compute_velocity) and no
+/// approach into a wall (strain_rate_velocity, nodal_constraints.hpp).
 void Engine::nodal_velocity_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
@@ -598,9 +604,9 @@ void Engine::nodal_velocity_row(int j) {
       vy = momentum_[2 * n + 1] / mass_[n];
     }
     if (const std::int32_t c = constraint_of_[n]; c >= 0) {
-      const NodeConstraint& nc = constraints_[static_cast<std::size_t>(c)];
-      if (nc.fixed & 1u) vx = nc.fixed_velocity[0];
-      if (nc.fixed & 2u) vy = nc.fixed_velocity[1];
+      const Vec2 v = strain_rate_velocity(Vec2(vx, vy), constraint_now(c));
+      vx = v.x();
+      vy = v.y();
     }
     velocity_[2 * n] = vx;
     velocity_[2 * n + 1] = vy;
@@ -634,7 +640,7 @@ void Engine::integrate_row(int j) {
     const double ax = small ? gx_ : fx / m, ay = small ? gy_ : fy / m;
     if (const std::int32_t c = constraint_of_[n]; c >= 0) {
       const Vec2 v_old(momentum_[2 * n] / m, momentum_[2 * n + 1] / m);
-      const ConstrainedVelocity r = constrained_velocity(v_old, Vec2(ax, ay), dt_, constraints_[static_cast<std::size_t>(c)]);
+      const ConstrainedVelocity r = constrained_velocity(v_old, Vec2(ax, ay), dt_, constraint_now(c));
       u[0] = r.velocity[0];
       u[1] = r.velocity[1];
       u[2] = r.rate[0];

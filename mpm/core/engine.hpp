@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mpm/core/body_force.hpp"
@@ -128,6 +129,8 @@ class Engine {
   void resort_particles(const std::vector<std::uint32_t>& previous);  ///< the same after a step, by a merge
   void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
+  void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
+  NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
   std::int64_t cell_key(double x, double y) const;
 
@@ -142,7 +145,7 @@ class Engine {
   std::vector<double> mass_;      ///< nodal mass
   std::vector<double> momentum_;  ///< 2 per node
   std::vector<double> force_;     ///< 2 per node (external + internal)
-  std::vector<double> velocity_;  ///< 2 per node: momentum / mass, velocity constraints applied
+  std::vector<double> velocity_;  ///< 2 per node: momentum / mass, constraints as the strain rate reads them
   std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
   std::vector<double> nodal_remedy_;  ///< 3 per node: the values a nodal remedy smooths (stress_remedy.hpp)
   /// Per chunk: a band of grid rows [chunk_row0_, chunk_row1_) x box columns, 5 values per node
@@ -171,6 +174,11 @@ class Engine {
   double small_mass_ = 0.0;
   std::vector<std::int32_t> constraint_of_;       ///< per node: index into constraints_, -1: unconstrained
   std::vector<NodeConstraint> constraints_;       ///< the constrained nodes' velocity and friction constraints
+  /// The one-sided contacts (NodeConstraint::one_sided): their node and constraint index, and per
+  /// constraint whether the material touches the wall there this step (1 for every other constraint);
+  /// wall_contact.cpp.
+  std::vector<std::pair<std::size_t, std::size_t>> contact_nodes_;
+  std::vector<std::uint8_t> touching_;
 
   // particles
   ParticleArrays cur_, nxt_;

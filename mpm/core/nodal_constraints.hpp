@@ -18,6 +18,8 @@ struct NodeConstraint {
   double sign_n = -1.0;    ///< outward normal sign along friction_dir (+1 / -1)
   double mu = 0.0;         ///< Coulomb coefficient
   bool constrained() const { return fixed != 0 || friction_dir >= 0; }
+  /// A frictional wall with a free normal: it stops an approach and never pulls (a one-sided contact).
+  bool one_sided() const { return friction_dir >= 0 && !((fixed >> friction_dir) & 1u); }
 };
 
 /// The constrained end-of-step nodal velocity and the velocity change it makes over the step.
@@ -38,6 +40,8 @@ struct ConstrainedVelocity {
 ///   Coulomb limit caps the tangential impulse at mu m w_n: the tangential velocity is reduced by
 ///   min(|v*_t|, mu w_n), never reversed (stick when |v*_t| <= mu w_n).
 /// - Prescribed components then take their value.
+/// A one-sided contact acts only where the material touches the wall (the engine's gap test,
+/// wall_contact.cpp); elsewhere the node is free.
 /// The rate (v_new - v_old) / dt is what the particles get under FLIP: at a wall it removes the
 /// particles' normal velocity into the wall together with the nodal one (as Uintah's MPM does,
 /// SerialMPM::setGridBoundaryConditions: "recompute acceleration as the difference between the velocity
@@ -62,6 +66,25 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
   for (int d = 0; d < 2; ++d)
     if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
   return {v, (v - v_old) / dt};
+}
+
+/// The velocity of a constrained node that the strain rate reads (USF from the mapped momentum, MUSL from
+/// the remapped one): the prescribed components, and at a frictional wall no approach into it. The wall
+/// stops that approach in the grid update (constrained_velocity), so the particles never move into it; a
+/// strain rate that read it would store compression the motion never makes, and on a one-sided contact
+/// under FLIP that stored compression pushes the body off the wall a little more every step (a block at
+/// rest on a slope hopped and crept down it: 0.125 m in 1 s, mpm/README.md "Friction and flutter"). USL reads
+/// the constrained end-of-step velocity itself. Friction is left to the grid update: it needs the normal
+/// impulse of the step.
+inline Vec2 strain_rate_velocity(Vec2 v, const NodeConstraint& c) {
+  if (c.friction_dir >= 0) {
+    const int dn = c.friction_dir;
+    const double v_wall = ((c.fixed >> dn) & 1u) ? c.fixed_velocity[dn] : 0.0;
+    if (c.sign_n * (v[dn] - v_wall) > 0.0) v[dn] = v_wall;
+  }
+  for (int d = 0; d < 2; ++d)
+    if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
+  return v;
 }
 
 }  // namespace mpm::core

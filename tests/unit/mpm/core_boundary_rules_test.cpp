@@ -11,6 +11,7 @@ namespace {
 using mpm::core::apply_cundall_damping;
 using mpm::core::constrained_velocity;
 using mpm::core::NodeConstraint;
+using mpm::core::strain_rate_velocity;
 using mpm::core::Vec2;
 
 /// A base node (friction normal -y, dir 1) with a fixed zero normal velocity.
@@ -71,6 +72,21 @@ TEST(NodalConstraints, WallWithNormalAlongX) {
   const auto away = constrained_velocity(Vec2(-1.0, -3.0), Vec2(0.0, 0.0), 0.01, c);
   EXPECT_EQ(away.velocity[0], -1.0);       // leaving the wall: free
   EXPECT_EQ(away.velocity[1], -3.0);
+}
+
+TEST(NodalConstraints, StrainRateSeesNoApproachIntoAOneSidedWall) {
+  NodeConstraint c;  // floor: outward -y, free normal (one-sided contact)
+  c.friction_dir = 1;
+  c.sign_n = -1.0;
+  c.mu = 0.5;
+  const Vec2 into = strain_rate_velocity(Vec2(0.3, -0.2), c);
+  EXPECT_EQ(into[1], 0.0);  // the approach the grid update will stop
+  EXPECT_EQ(into[0], 0.3);  // friction is the grid update's (it needs the step's normal impulse)
+  const Vec2 off = strain_rate_velocity(Vec2(0.3, 0.2), c);
+  EXPECT_EQ(off[1], 0.2);  // leaving the wall: free
+  c.fixed = 1u;  // and a prescribed x velocity
+  c.fixed_velocity = Vec2(-0.1, 0.0);
+  EXPECT_EQ(strain_rate_velocity(Vec2(0.3, 0.2), c)[0], -0.1);
 }
 
 TEST(CundallDamping, ReducesForceAgainstVelocity) {
