@@ -22,6 +22,18 @@ struct NodeConstraint {
   bool one_sided() const { return friction_dir >= 0 && !((fixed >> friction_dir) & 1u); }
 };
 
+/// The normal velocity of a frictional node's wall: the prescribed one, else 0 (a wall at rest).
+inline double wall_velocity(const NodeConstraint& c) {
+  const int dn = c.friction_dir;
+  return ((c.fixed >> dn) & 1u) ? c.fixed_velocity[dn] : 0.0;
+}
+
+/// The prescribed velocity components take their value.
+inline void apply_prescribed(Vec2& v, const NodeConstraint& c) {
+  for (int d = 0; d < 2; ++d)
+    if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
+}
+
 /// The constrained end-of-step nodal velocity and the velocity change it makes over the step.
 struct ConstrainedVelocity {
   Vec2 velocity;  ///< v_new
@@ -51,8 +63,7 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
   Vec2 v = v_old + dt * a;
   if (c.friction_dir >= 0) {
     const int dn = c.friction_dir;
-    const bool normal_fixed = (c.fixed >> dn) & 1u;
-    const double v_wall = normal_fixed ? c.fixed_velocity[dn] : 0.0;
+    const double v_wall = wall_velocity(c);
     const double approach = c.sign_n * (v[dn] - v_wall);
     if (approach > 0.0) {
       const double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
@@ -63,8 +74,7 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
       v[dn] = v_wall;
     }
   }
-  for (int d = 0; d < 2; ++d)
-    if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
+  apply_prescribed(v, c);
   return {v, (v - v_old) / dt};
 }
 
@@ -79,11 +89,10 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
 inline Vec2 strain_rate_velocity(Vec2 v, const NodeConstraint& c) {
   if (c.friction_dir >= 0) {
     const int dn = c.friction_dir;
-    const double v_wall = ((c.fixed >> dn) & 1u) ? c.fixed_velocity[dn] : 0.0;
+    const double v_wall = wall_velocity(c);
     if (c.sign_n * (v[dn] - v_wall) > 0.0) v[dn] = v_wall;
   }
-  for (int d = 0; d < 2; ++d)
-    if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
+  apply_prescribed(v, c);
   return v;
 }
 

@@ -69,13 +69,14 @@ MeanMotion slide(SlidingBlockSpec spec, Scheme scheme, Transfer transfer, double
   };
   const auto [row, y_start] = lowest_row();
   while (sim.time() < t_end - 1e-12) sim.step();  // throws on a runaway velocity
+  const auto end = sim.snapshot();
   if (base_rise) {
     double y = 0.0;
-    for (const auto& p : sim.snapshot())
+    for (const auto& p : end)
       if (std::find(row.begin(), row.end(), p.id) != row.end()) y += p.coord_y;
     *base_rise = y / static_cast<double>(row.size()) - y_start;
   }
-  MeanMotion m = mean_motion(sim.snapshot());
+  MeanMotion m = mean_motion(end);
   m.t = sim.time();
   return m;
 }
