@@ -4,9 +4,11 @@
 // friction). Prints the block's mean displacement and velocity at t_end, their errors, and the step
 // of a numerical failure (runaway velocity) if one happens.
 //
-//   mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base]]]]]]]]]]
-//   defaults:                    2      1e6 0.25 2   0.4  0.3  30             0.3 friction
+//   mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base [start]]]]]]]]]]]
+//   defaults:                    2      1e6 0.25 2   0.4  0.3  30             0.3 friction k0
 // base "contact": the friction constraint alone (a one-sided frictional contact, fem2mpm's default base).
+// start "slope": the block starts with the self-weight shear of a layer on the slope as well ("k0":
+// the normal stresses only).
 // `only` keeps the rows whose label ("ED2Q4/MUSL/FLIP") contains it ("" for all).
 //
 //   mpm_sliding_block_benchmark --flutter [E]
@@ -104,8 +106,9 @@ int flutter_table(double E) {
 
 int main(int argc, char** argv) {
   if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-    std::puts("usage: mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base]]]]]]]]]]\n"
+    std::puts("usage: mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base [start]]]]]]]]]]]\n"
               "       base: friction (CB-Geo's bilateral base, default) or contact (one-sided frictional contact)\n"
+              "       start: k0 (self-weight normal stresses, default) or slope (and the self-weight shear)\n"
               "       mpm_sliding_block_benchmark --flutter [E]");
     return 0;
   }
@@ -127,12 +130,18 @@ int main(int argc, char** argv) {
     return 2;
   }
   spec.one_sided = base == "contact";
+  const std::string start = argc > 11 ? argv[11] : "k0";
+  if (start != "k0" && start != "slope") {
+    std::fprintf(stderr, "mpm_sliding_block_benchmark: error: start: expected k0 or slope, got '%s'\n", start.c_str());
+    return 2;
+  }
+  spec.slope_start = start == "slope";
   const double acc = coulomb(spec);
   const double d_exact = 0.5 * acc * t_end * t_end, v_exact = acc * t_end;
   spec.cells_x = static_cast<int>(std::ceil((spec.x0 + spec.width + d_exact + 2.0) / spec.h));
-  std::printf("block %g x %g m, E %g Pa, nu %g, h %g m, %d x %d particles per cell, CFL %g, mu %g, angle %g deg, base %s\n",
+  std::printf("block %g x %g m, E %g Pa, nu %g, h %g m, %d x %d particles per cell, CFL %g, mu %g, angle %g deg, base %s, start %s\n",
               spec.width, spec.height, spec.E, spec.nu, spec.h, spec.ppd, spec.ppd, cfl, spec.mu, spec.angle_deg,
-              base.c_str());
+              base.c_str(), start.c_str());
   std::printf("analytic at t = %g s: d = %.4f m, v = %.4f m/s\n", t_end, d_exact, v_exact);
   std::printf("%-6s %-5s %-10s %10s %8s %10s %8s %8s\n", "cells", "scheme", "transfer", "d (m)", "d err%",
               "v (m/s)", "v err%", "wall s");

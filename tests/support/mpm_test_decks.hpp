@@ -127,6 +127,9 @@ struct SlidingBlockSpec {
   /// true: the base is the friction constraint alone, a one-sided frictional contact (fem2mpm --base
   /// contact); false: CB-Geo's base, also fixed in y (bilateral).
   bool one_sided = false;
+  /// true: the block starts in the self-weight state of a layer on the slope, the shear that carries the
+  /// down-slope load included (sigma_xy = rho g sin(a) (H - y)); false: the normal stresses only.
+  bool slope_start = false;
 };
 inline Deck sliding_block(const SlidingBlockSpec& s) {
   constexpr double g = 9.81;
@@ -139,6 +142,7 @@ inline Deck sliding_block(const SlidingBlockSpec& s) {
   for (auto& p : deck.particles) {
     p.stress_yy = -s.rho * g * std::cos(a) * (s.height - p.coord_y);
     p.stress_xx = p.stress_zz = k0 * p.stress_yy;
+    if (s.slope_start) p.tau_xy = s.rho * g * std::sin(a) * (s.height - p.coord_y);
   }
   const auto base = nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; });
   if (!s.one_sided) deck.velocity_constraints.push_back({base, 1, 0.0});
