@@ -5,6 +5,7 @@
 #include "fem_tcl/materials/drucker_prager.hpp"
 #include "fem_tcl/materials/elastic_isotropic.hpp"
 #include "fem_tcl/materials/mohr_coulomb.hpp"
+#include "fem_tcl/materials/pressure_independ_multi_yield.hpp"
 
 namespace fem::materials {
 
@@ -14,6 +15,7 @@ constexpr std::array kParsers{
     MaterialParserEntry{"ElasticIsotropic", parse_elastic_isotropic},
     MaterialParserEntry{"DruckerPrager", parse_drucker_prager},
     MaterialParserEntry{"MohrCoulomb", parse_mohr_coulomb},
+    MaterialParserEntry{"PressureIndependMultiYield", parse_pressure_independ_multi_yield},
 };
 }  // namespace
 

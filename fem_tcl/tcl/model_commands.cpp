@@ -41,6 +41,11 @@ std::string_view material_usage(std::string_view type) {
   if (type == "DruckerPrager") {
     return "nDMaterial DruckerPrager tag K G sigma_y rho rho_bar Kinf Ko delta1 delta2 H theta <density> <atm>";
   }
+  if (type == "MohrCoulomb") return "nDMaterial MohrCoulomb tag E nu rho phi c psi <-tension T>";
+  if (type == "PressureIndependMultiYield") {
+    return "nDMaterial PressureIndependMultiYield tag nd rho refShearModul refBulkModul cohesi peakShearStra "
+           "<frictionAng=0 <refPress=100 <pressDependCoe=0 <noYieldSurf=20 <r1 Gs1 ...>>>>>";
+  }
   return "nDMaterial <type> tag ...";
 }
 

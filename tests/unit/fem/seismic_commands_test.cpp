@@ -9,6 +9,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -380,3 +383,43 @@ pattern UniformExcitation 3 2 -accel {Path 7 -time {0 1} -values {0 1}}
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------- PressureIndependMultiYield
+TEST(MultiYieldMaterial, OpenSeesSyntaxStagesAndTheFiveStressColumns) {
+  Interpreter interp;
+  interp.eval(std::string(kModel) +
+              "nDMaterial PressureIndependMultiYield 1 2 1.8 6.0e4 3.0e5 30 0.1\n"
+              "nDMaterial PressureIndependMultiYield 2 2 1.8 6.0e4 3.0e5 30 0.1 0 100 0 10\n"
+              "nDMaterial PressureIndependMultiYield 3 2 1.8 6.0e4 3.0e5 30 0.1 0 100 0 -3 1e-4 0.9 1e-3 0.6 1e-2 0.2\n"
+              "nDMaterial PressureIndependMultiYield 4 2 2.0 6.0e4 3.0e5 5 0.1 30 80 0.5\n"
+              "node 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1\n"
+              "element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0\n");
+  const auto& m = interp.context().materials;
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m.at(3)->type_name(), "PressureIndependMultiYield");
+  // OpenSees' getCommittedStress in 2D: sxx syy szz sxy and the stress ratio (0 while elastic).
+  const std::string response = interp.eval("eleResponse 1 stress");
+  std::istringstream words(response);
+  std::vector<double> values{std::istream_iterator<double>(words), std::istream_iterator<double>()};
+  EXPECT_EQ(values.size(), 5u) << response;
+  interp.eval("updateMaterialStage -material 1 -stage 1");
+  const std::string bad_stage = error_of(interp, "updateMaterialStage -material 1 -stage 2");
+  EXPECT_NE(bad_stage.find("stages are 0 (elastic) and 1 (plastic)"), std::string::npos) << bad_stage;
+}
+
+TEST(MultiYieldMaterial, BadInputNamesTheParameterWithTheUsageLine) {
+  Interpreter interp;
+  interp.eval(kModel);
+  const std::string nd = error_of(interp, "nDMaterial PressureIndependMultiYield 1 3 1.8 6.0e4 3.0e5 30 0.1");
+  EXPECT_NE(nd.find("expected nd = 2"), std::string::npos) << nd;
+  EXPECT_NE(nd.find("usage: nDMaterial PressureIndependMultiYield tag nd rho"), std::string::npos) << nd;
+  EXPECT_NE(error_of(interp, "nDMaterial PressureIndependMultiYield 1 2 1.8 6.0e4 3.0e5 30").find("missing peakShearStra"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "nDMaterial PressureIndependMultiYield 1 2 1.8 6.0e4 3.0e5 30 0.1 0 100 0 -2 1e-4 0.9")
+                .find("missing"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "nDMaterial PressureIndependMultiYield 1 2 1.8 -6.0e4 3.0e5 30 0.1").find("refShearModul > 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(interp, "nDMaterial PressureIndependMultiYield 1 2 1.8 6.0e4 3.0e5 0 0.1").find("cohesi > 0"),
+            std::string::npos);
+}

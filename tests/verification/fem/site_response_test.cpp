@@ -238,4 +238,44 @@ TEST(SiteResponse, InputEnergyEqualsDashpotWorkPlusColumnEnergy) {
   EXPECT_LT(worst, 1e-8 * max_energy) << "energy balance error " << worst << " of " << max_energy;
 }
 
+// The same column of PressureIndependMultiYield clay (-material pimy: G and K of the elastic column,
+// c = 50 kPa, peakShearStra 0.1, 20 surfaces, no gravity: phi = 0 makes it pressure independent).
+TEST(SiteResponse, MultiYieldClayBelowItsFirstSurfaceIsTheLinearColumn) {
+  // A weak input (1e-4 m/s; shear stresses ~0.02 kPa, the first surface at (2 c / sqrt 3) / 20 = 2.9 kPa):
+  // the multi-yield column is the elastic one.
+  const fs::path elastic = run_column("pimy_weak_elastic", {"-amp", "1e-4"});
+  const fs::path clay = run_column("pimy_weak", {"-amp", "1e-4", "-material", "pimy"});
+  const Signal a = column(elastic / "surface_vel.out", 1), b = column(clay / "surface_vel.out", 1);
+  ASSERT_EQ(a.v.size(), b.v.size());
+  double peak = 0.0, worst = 0.0;
+  for (std::size_t k = 0; k < a.v.size(); ++k) {
+    peak = std::max(peak, std::abs(a.v[k]));
+    worst = std::max(worst, std::abs(a.v[k] - b.v[k]));
+  }
+  EXPECT_GT(peak, 1e-4);
+  EXPECT_LT(worst, 1e-8 * peak);
+}
+
+TEST(SiteResponse, MultiYieldClayCapsTheBaseShearAtItsStrength) {
+  // The full Ricker (1 m/s): the linear column's base shear reaches 178 kPa; the clay's cannot pass its
+  // strength in simple shear, 2 c / sqrt(3) = 57.7 kPa (the failure surface q = 2 c, q = sqrt(3) tau), and
+  // the yielding layer passes less motion to the surface (measured 54.5 kPa, stress ratio 0.944; peak
+  // surface velocity 0.27 m/s against the linear 1.33).
+  const fs::path linear = run_column("pimy_strong_elastic", {});
+  const fs::path clay = run_column("pimy_strong", {"-material", "pimy", "-su", "50"});
+  const double strength = 2.0 * 50.0 / std::sqrt(3.0);
+  const Signal linear_shear = column(linear / "base_stress.out", 3);
+  const Signal shear = column(clay / "base_stress.out", 4), ratio = column(clay / "base_stress.out", 5);
+  const auto peak_of = [](const Signal& s) {
+    double p = 0.0;
+    for (double v : s.v) p = std::max(p, std::abs(v));
+    return p;
+  };
+  EXPECT_GT(peak_of(linear_shear), 2.0 * strength);
+  EXPECT_LE(peak_of(shear), strength * (1.0 + 1e-9));
+  EXPECT_GT(peak_of(shear), 0.9 * strength);
+  EXPECT_LE(peak_of(ratio), 1.0 + 1e-9);
+  EXPECT_LT(peak_of(column(clay / "surface_vel.out", 1)), 0.5 * peak_of(column(linear / "surface_vel.out", 1)));
+}
+
 }  // namespace
