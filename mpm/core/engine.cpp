@@ -141,10 +141,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
       nc.mu = c.friction;
     }
   }
-  touching_.assign(constraints_.size(), 1);
-  for (std::size_t node = 0; node < nodes_; ++node)
-    if (const std::int32_t c = constraint_of_[node]; c >= 0 && constraints_[static_cast<std::size_t>(c)].one_sided())
-      contact_nodes_.emplace_back(node, static_cast<std::size_t>(c));
+  set_up_wall_contacts();
 
   // Particles.
   const std::size_t n = deck.particles.size();

@@ -129,6 +129,7 @@ class Engine {
   void resort_particles(const std::vector<std::uint32_t>& previous);  ///< the same after a step, by a merge
   void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
+  void set_up_wall_contacts();  ///< contact_nodes_ from the constraints (wall_contact.cpp)
   void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
   NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
@@ -174,10 +175,16 @@ class Engine {
   double small_mass_ = 0.0;
   std::vector<std::int32_t> constraint_of_;       ///< per node: index into constraints_, -1: unconstrained
   std::vector<NodeConstraint> constraints_;       ///< the constrained nodes' velocity and friction constraints
-  /// The one-sided contacts (NodeConstraint::one_sided): their node and constraint index, and per
-  /// constraint whether the material touches the wall there this step (1 for every other constraint);
-  /// wall_contact.cpp.
-  std::vector<std::pair<std::size_t, std::size_t>> contact_nodes_;
+  /// A one-sided contact node (NodeConstraint::one_sided): its constraint index and the lattice index,
+  /// along the wall's normal, of the wall face it belongs to (the innermost node of its run of contact
+  /// nodes: nodes behind the face lie inside the rigid wall); wall_contact.cpp.
+  struct WallContactNode {
+    std::size_t node, constraint;
+    int face;
+  };
+  /// The one-sided contacts, and per constraint whether the material touches the wall there this step
+  /// (1 for every other constraint).
+  std::vector<WallContactNode> contact_nodes_;
   std::vector<std::uint8_t> touching_;
 
   // particles

@@ -2,7 +2,8 @@
 // approach and carries friction only where the material touches the wall, i.e. where a particle's domain
 // reaches it: gap = s (x_wall - x_p) - l_p <= 0 along the wall's normal (s the outward sign, l_p the
 // particle's half-size), for a particle in one of the four cells that share the node (one that has passed
-// the wall has a negative gap).
+// the wall has a negative gap). The wall is the face of the node's run of contact nodes along the normal
+// (set_up_wall_contacts): a base given as several node rows is one rigid body whose face is the top row.
 //
 // Why: on a single velocity field the wall node also carries particles that have left the wall. Under FLIP
 // and APIC its normal velocity has noise of either sign; the contact stops every approach and keeps every
@@ -29,22 +30,51 @@ NodeConstraint Engine::constraint_now(std::int32_t c) const {
   return nc;
 }
 
+void Engine::set_up_wall_contacts() {
+  touching_.assign(constraints_.size(), 1);
+  const auto contact = [&](std::size_t node) -> const NodeConstraint* {
+    const std::int32_t c = constraint_of_[node];
+    if (c < 0 || !constraints_[static_cast<std::size_t>(c)].one_sided()) return nullptr;
+    return &constraints_[static_cast<std::size_t>(c)];
+  };
+  const int lattice[2] = {nx_, ny_};
+  const auto row = static_cast<std::size_t>(nx_);
+  for (std::size_t node = 0; node < nodes_; ++node) {
+    const NodeConstraint* nc = contact(node);
+    if (!nc) continue;
+    // Walk inwards (against the outward normal) while the next node is a contact of the same wall: a
+    // base given as several node rows (a grid that extends below it, GIMP's halo) has one face, the top row.
+    const int dn = nc->friction_dir, inward = nc->sign_n > 0 ? -1 : 1;
+    int at[2] = {static_cast<int>(node % row), static_cast<int>(node / row)};
+    for (;;) {
+      int next[2] = {at[0], at[1]};
+      next[dn] += inward;
+      if (next[dn] < 0 || next[dn] >= lattice[dn]) break;
+      const NodeConstraint* o = contact(static_cast<std::size_t>(next[0]) + static_cast<std::size_t>(next[1]) * row);
+      if (!o || o->friction_dir != dn || o->sign_n != nc->sign_n) break;
+      at[dn] = next[dn];
+    }
+    contact_nodes_.push_back({node, static_cast<std::size_t>(constraint_of_[node]), at[dn]});
+  }
+}
+
 void Engine::find_wall_contacts() {
   if (contact_nodes_.empty()) return;
   const auto key_of = [&](std::uint32_t p) { return cur_.key[p]; };
   const double h[2] = {grid_.hx, grid_.hy};
   const double origin[2] = {grid_.x0, grid_.y0};
   const int cells[2] = {cells_x_, cells_y_};
-  for (const auto& [node, c] : contact_nodes_) {
+  for (const auto& [node, c, face] : contact_nodes_) {
     const NodeConstraint& nc = constraints_[c];
     const int dn = nc.friction_dir, dt = 1 - dn;
     const int at[2] = {static_cast<int>(node % static_cast<std::size_t>(nx_)),
                        static_cast<int>(node / static_cast<std::size_t>(nx_))};
-    const double wall = origin[dn] + at[dn] * h[dn];
-    // The four cells that share the node: a particle on the inner side whose domain reaches the wall, or
-    // one that has passed it (gap < 0), touches it.
+    const double wall = origin[dn] + face * h[dn];
+    // The cells that share the node and those between it and the wall face (a node behind the face is
+    // inside the wall): a particle on the inner side whose domain reaches the face, or one that has passed
+    // it (gap < 0), touches it.
     bool touching = false;
-    for (int across = at[dn] - 1; across <= at[dn] && !touching; ++across) {
+    for (int across = std::min(at[dn], face) - 1; across <= std::max(at[dn], face) && !touching; ++across) {
       for (int side = at[dt] - 1; side <= at[dt] && !touching; ++side) {
         if (across < 0 || across >= cells[dn] || side < 0 || side >= cells[dt]) continue;
         int cell[2];

@@ -108,4 +108,29 @@ INSTANTIATE_TEST_SUITE_P(Transfers, DepositRest,
                                   (std::get<1>(info.param) == Transfer::APIC ? "_APIC" : "_PIC");
                          });
 
+// The same collapse on a one-sided frictional contact (fem2mpm's default base) whose node set is three
+// rows deep (the grid reaches a cell below the base, plus the uGIMP halo), as the study's decks have it.
+// The wall is the top row's face, the rows behind it lie inside the rigid base: when each row was its own
+// wall, the bottom particles that the flow pressed past y = 0 reached nodes one row down that counted them
+// as not touching, and sank (on the a = 3 study column 34 particles below the base by t/tau_c = 7, 0.9 m
+// deep, one at a time at up to 0.9 m/s).
+TEST(DepositRest, StaysOnAContactBaseSeveralNodeRowsDeep) {
+  const double h = 0.25;
+  Deck deck = collapsing_column(make_grid(0, -h, h, 40, 11, CellType::Gimp16),
+                                mohr_coulomb(0, 1800, 2e6, 0.3, 30.0, 100.0, 0.0), 2.0, 2.0, 2,
+                                std::tan(30.0 * std::acos(-1.0) / 180.0));
+  deck.velocity_constraints.pop_back();  // the base's zero normal velocity: friction alone is the contact
+  deck.analysis.transfer = Transfer::APIC;
+  deck.analysis.cfl = 0.5;
+  deck.analysis.dt = 1.0;
+  mpm::core::Simulation sim(deck, 1);
+  double lowest = 1.0;
+  while (sim.time() < 6.0) {
+    sim.step();
+    for (const auto& p : sim.snapshot()) lowest = std::min(lowest, p.coord_y);
+  }
+  std::printf("lowest particle centre over 6 s: %.4f m (started at %.4f)\n", lowest, 0.25 * h);
+  EXPECT_GT(lowest, 0.0);  // no particle centre below the base
+}
+
 }  // namespace
