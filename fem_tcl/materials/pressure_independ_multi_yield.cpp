@@ -138,6 +138,14 @@ void PressureIndependMultiYield::set_up_surfaces() {
     }
   } else {
     const auto& g = p.backbone;
+    for (int m = 0; m < n; ++m) {
+      const bool ok = g[2 * m] > 0.0 && g[2 * m + 1] > 0.0 &&
+                      (m == 0 || (g[2 * m] > g[2 * m - 2] && g[2 * m] * g[2 * m + 1] > g[2 * m - 2] * g[2 * m - 1]));
+      if (!ok)
+        throw common::InputError(where, "backbone point " + std::to_string(m + 1) +
+                                            ": expected positive shear strains and G/Gmax with the strain and the "
+                                            "stress G (G/Gmax) strain increasing from point to point");
+    }
     const double tmax = G * g[2 * (n - 1)] * g[2 * (n - 1) + 1];
     double cone = 1.0;
     residual_pressure_ = 0.0;

@@ -36,6 +36,18 @@ int fix_flag(common::CommandArgs& args, std::string_view what) {
   return f;
 }
 
+/// Runs a parser; an error of the constructor it calls (parameters, geometry) gets the usage line too.
+template <class Parse>
+auto with_usage(std::string_view usage, Parse&& parse) -> decltype(parse()) {
+  try {
+    return parse();
+  } catch (const common::InputError& e) {
+    const std::string what = e.what();
+    if (what.find("usage:") != std::string::npos) throw;
+    throw common::InputError(what + "; usage: " + std::string(usage));
+  }
+}
+
 std::string_view material_usage(std::string_view type) {
   if (type == "ElasticIsotropic") return "nDMaterial ElasticIsotropic tag E nu <rho>";
   if (type == "DruckerPrager") {
@@ -172,7 +184,7 @@ std::string cmd_nd_material(Context& ctx, common::CommandArgs& args) {
   const std::vector<std::string> words = remaining_words(args);
   common::CommandArgs sub("nDMaterial " + type + (words.empty() ? "" : " " + words[0]),
                           std::string(material_usage(type)), words);
-  std::unique_ptr<materials::NDMaterial> material = parse(sub);
+  std::unique_ptr<materials::NDMaterial> material = with_usage(sub.usage(), [&] { return parse(sub); });
   const int tag = material->tag();
   if (ctx.materials.count(tag)) sub.fail("nDMaterial " + std::to_string(tag) + " already exists");
   ctx.materials.emplace(tag, std::move(material));
@@ -191,15 +203,7 @@ std::string cmd_element(Context& ctx, common::CommandArgs& args) {
   const std::vector<std::string> words = remaining_words(args);
   common::CommandArgs sub("element " + type + (words.empty() ? "" : " " + words[0]), std::string(entry->usage), words);
   elements::ElementBuildContext build{ctx.domain, ctx.materials, &ctx.uniaxial_materials};
-  std::unique_ptr<domain::Element> element;
-  try {
-    element = entry->parse(sub, build);
-  } catch (const common::InputError& e) {
-    // constructor errors (geometry) get the usage line too
-    const std::string what = e.what();
-    if (what.find("usage:") != std::string::npos) throw;
-    throw common::InputError(what + "; usage: " + std::string(entry->usage));
-  }
+  std::unique_ptr<domain::Element> element = with_usage(entry->usage, [&] { return entry->parse(sub, build); });
   if (ctx.domain.find_element(element->tag())) sub.fail("element " + std::to_string(element->tag()) + " already exists");
   ctx.domain.add_element(std::move(element), sub.command());
   return {};

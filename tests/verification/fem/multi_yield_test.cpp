@@ -223,6 +223,11 @@ TEST(PressureIndependMultiYield, RejectsBadParameters) {
   p.surfaces = 3;
   p.backbone = {1e-4, 0.9, 1e-3, 0.6};  // 2 points for 3 surfaces
   EXPECT_THROW(PressureIndependMultiYield(1, p), common::InputError);
+  p.surfaces = 2;
+  p.backbone = {1e-3, 0.5, 1e-4, 0.9};  // the strain decreasing: the second surface inside the first
+  EXPECT_THROW(PressureIndependMultiYield(1, p), common::InputError);
+  p.backbone = {1e-4, 0.9, 1e-3, 0.05};  // the stress decreasing
+  EXPECT_THROW(PressureIndependMultiYield(1, p), common::InputError);
   PressureIndependMultiYield ok(1, clay());
   EXPECT_THROW(ok.copy_for(fem::materials::PlaneType::PlaneStress), common::InputError);
   EXPECT_THROW(ok.update_stage(2), common::InputError);
