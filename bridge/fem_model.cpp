@@ -287,6 +287,18 @@ void add_material(FemModel& model, const json& j) {
     model.materials[m.name] = m;
     return;
   }
+  if (m.type == "PressureIndependMultiYield") {  // fem_tcl's entry (multi_yield_match.hpp)
+    const auto G = opt("refShearModul"), K = opt("refBulkModul");
+    if (K && G && 3 * *K + *G > 0) {
+      m.E = 9 * *K * *G / (3 * *K + *G);
+      m.nu = (3 * *K - 2 * *G) / (2 * (3 * *K + *G));
+    }
+    m.rho = opt("rho");
+    m.multi_yield_cohesion = opt("cohesi");
+    m.multi_yield_friction_deg = opt("frictionAng");
+    model.materials[m.name] = m;
+    return;
+  }
   m.E = opt("E");
   m.nu = opt("nu");
   m.rho = opt("rho");

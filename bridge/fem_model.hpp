@@ -43,6 +43,8 @@ struct FemMaterial {
   /// DruckerPrager only, OpenSees' parameters: cone f = ||s|| + rho I1 - sqrt(2/3) sigma_y, plastic potential
   /// with rho_bar (E and nu are derived from its K and G, the density from "density").
   std::optional<double> dp_sigma_y, dp_rho, dp_rho_bar;
+  /// PressureIndependMultiYield only: cohesi and frictionAng (E and nu from refShearModul, refBulkModul).
+  std::optional<double> multi_yield_cohesion, multi_yield_friction_deg;
 };
 
 /// A homogeneous single-point constraint (`fix node fx fy`), from fem_tcl's "constraints.fix" list.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bridge/drucker_prager_match.hpp"
+#include "bridge/multi_yield_match.hpp"
 #include "bridge/recorder_file.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
@@ -76,12 +77,26 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
   const auto it = model.materials.find(name);
   const FemMaterial* fem = it == model.materials.end() ? nullptr : &it->second;
   MaterialValues v;
-  std::string dp_failure;
+  std::string mapping_failure;
   if (fem) {
     v.E = fem->E; v.nu = fem->nu; v.rho = fem->rho; v.phi = fem->phi_deg; v.c = fem->cohesion; v.psi = fem->psi_deg; v.tension = fem->tension;
     if (fem->type == "ElasticIsotropicMaterial" || fem->type == "ElasticIsotropic") v.type = "elastic";
     else if (fem->type == "MohrCoulomb") v.type = "mohr-coulomb";
-    else if (fem->type == "DruckerPrager" && fem->dp_sigma_y && fem->dp_rho && fem->dp_rho_bar) {
+    else if (fem->type == "PressureIndependMultiYield" && fem->multi_yield_cohesion) {
+      if (fem->multi_yield_friction_deg.value_or(0.0) == 0.0) {
+        v.type = "mohr-coulomb";
+        v.phi = 0.0;
+        v.psi = 0.0;
+        v.c = multi_yield_tresca_cohesion(*fem->multi_yield_cohesion);
+        notes.push_back("material '" + name + "': PressureIndependMultiYield (cohesi " + fmt(*fem->multi_yield_cohesion) +
+                        ") -> MohrCoulomb2D phi 0, c " + fmt(*v.c) +
+                        " = 2 cohesi / sqrt(3), its plane-strain strength (the backbone below it not carried over)");
+      } else {
+        mapping_failure = " (PressureIndependMultiYield with frictionAng " + fmt(*fem->multi_yield_friction_deg) +
+                     " > 0 has a strength frozen at each point's confinement, no one Mohr-Coulomb: give --material " +
+                     name + ":type=mohr-coulomb,phi=...,cohesion=...)";
+      }
+    } else if (fem->type == "DruckerPrager" && fem->dp_sigma_y && fem->dp_rho && fem->dp_rho_bar) {
       if (const auto mc = plane_strain_mohr_coulomb(*fem->dp_sigma_y, *fem->dp_rho, *fem->dp_rho_bar)) {
         v.type = "mohr-coulomb";
         v.phi = mc->phi_deg;
@@ -92,7 +107,7 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
                         fmt(mc->phi_deg) + " deg, c " + fmt(mc->cohesion) + ", psi " + fmt(mc->psi_deg) +
                         " deg (same apex; hardening not carried over)");
       } else {
-        dp_failure = " (DruckerPrager rho " + fmt(*fem->dp_rho) + " / rho_bar " + fmt(*fem->dp_rho_bar) +
+        mapping_failure = " (DruckerPrager rho " + fmt(*fem->dp_rho) + " / rho_bar " + fmt(*fem->dp_rho_bar) +
                      " >= 1/sqrt(6) has no plane-strain Mohr-Coulomb match: give --material " + name + ":type=mohr-coulomb,phi=...,cohesion=...)";
       }
     }
@@ -104,7 +119,7 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
   const std::string why = !model.materials_readable
                               ? " (the file is not valid JSON, as OpenSees 3.8 writes it for DruckerPrager and multi-yield "
                                 "materials: give the material with --material-type, --E, --nu, --density, --phi, --cohesion)"
-                              : !dp_failure.empty() ? dp_failure
+                              : !mapping_failure.empty() ? mapping_failure
                               : (fem ? " (type '" + fem->type + "' has no MPM counterpart: give --material-type and its parameters)"
                                      : " (not in properties.ndMaterials: give --material-type and its parameters)");
   if (type.empty()) throw common::InputError(src, "unknown material" + why);

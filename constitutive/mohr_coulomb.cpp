@@ -234,9 +234,11 @@ bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const Mohr
   const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
   // Strictly inside needs no tolerance (tol >= 0): the common case, without the stress scale.
   if (f_main <= 0.0 && (!tension || t[0] - st.tension_cutoff <= 0.0)) return true;
-  const double scale = std::max({std::abs(t[0]), std::abs(t[2]), two_c_cos, tension ? std::abs(st.tension_cutoff) : 0.0});
-  const double tol = 1e-12 * scale;
-  return f_main <= tol && (!tension || t[0] - st.tension_cutoff <= tol);
+  // Each test with the scale of what it compares: a cutoff far above the stresses (a Tresca material given
+  // T = 1e30 for "none") must not widen the shear test (it made every state elastic).
+  const double tol = 1e-12 * std::max({std::abs(t[0]), std::abs(t[2]), two_c_cos});
+  const double tol_t = 1e-12 * std::max(std::abs(t[0]), std::abs(st.tension_cutoff));
+  return f_main <= tol && (!tension || t[0] - st.tension_cutoff <= tol_t);
 }
 bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st) {
   return inside(t, sin_phi, cos_phi, st, tension_active(sin_phi, cos_phi, st));
@@ -246,8 +248,9 @@ bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const Mohr
 /// `solves`: the candidates' solves in kCandidates order, or nullptr to form each when it is tried.
 PrincipalResult principal_return(const Planes& p, const Eigen::Vector3d& trial, double shear_modulus,
                                  const CandidateSolve* solves) {
-  const double scale = std::max({std::abs(trial[0]), std::abs(trial[2]), std::abs(p.r[kMain]),
-                                 p.tension ? std::abs(p.r[kT1]) : 0.0});
+  // The tension cutoff counts only where it is within the stresses' reach (see inside()).
+  const double stresses = std::max({std::abs(trial[0]), std::abs(trial[2]), std::abs(p.r[kMain])});
+  const double scale = std::max(stresses, p.tension ? std::min(std::abs(p.r[kT1]), 1e3 * stresses) : 0.0);
   PrincipalResult res{trial, ReturnRegion::Elastic, {0, 0, 0}, 0};
 
   const double tol = 1e-9 * scale;

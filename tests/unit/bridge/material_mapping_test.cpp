@@ -183,6 +183,32 @@ TEST_F(MaterialMapping, BadPerMaterialOptionsNameTheOption) {
   EXPECT_NE(msg.find("1, 2, 3"), std::string::npos) << msg;
 }
 
+TEST_F(MaterialMapping, FrictionlessMultiYieldClayBecomesTrescaWithItsPlaneStrainStrength) {
+  // fem_tcl's print -JSON entry of nDMaterial PressureIndependMultiYield (bridge/multi_yield_match.hpp):
+  // E, nu from refShearModul and refBulkModul, phi = psi = 0, c = 2 cohesi / sqrt(3) (q_f = 2 cohesi,
+  // tau_max = q_f / sqrt(3) in plane strain).
+  std::string model = kModel;
+  const std::string dp = model.substr(model.find(R"({"name": "3", "type": "DruckerPrager")"));
+  const std::string line = dp.substr(0, dp.find('}') + 1);
+  const std::string clay = R"({"name": "3", "type": "PressureIndependMultiYield", "rho": 1.8, "refShearModul": 60000, "refBulkModul": 300000, "cohesi": 30, "peakShearStra": 0.1, "frictionAng": 0, "refPress": 100, "pressDependCoe": 0, "noYieldSurf": 20})";
+  model.replace(model.find(line), line.size(), clay);
+  const auto a = bridge::read_fem_state(bridge::parse_fem_model(model, "model.json"), options_);
+  const auto& m = a.state.materials[2];
+  EXPECT_EQ(m.type, bridge::MpmMaterial::Type::MohrCoulomb2D);
+  EXPECT_CLOSE(m.youngs_modulus, 9 * 3e5 * 6e4 / (3 * 3e5 + 6e4), 0, 1e-14);
+  EXPECT_CLOSE(m.poisson_ratio, (3 * 3e5 - 2 * 6e4) / (2 * (3 * 3e5 + 6e4)), 0, 1e-14);
+  EXPECT_CLOSE(m.density, 1.8, 0, 0);
+  EXPECT_EQ(m.friction, 0.0);
+  EXPECT_EQ(m.dilation, 0.0);
+  EXPECT_CLOSE(m.cohesion, 2 * 30 / std::sqrt(3.0), 0, 1e-14);
+  // With a friction angle its strength is frozen point by point at the switch: no one Mohr-Coulomb.
+  model.replace(model.find(R"("frictionAng": 0)"), 16, R"("frictionAng": 30)");
+  const std::string msg = test_support::input_error_message(
+      [&] { bridge::read_fem_state(bridge::parse_fem_model(model, "model.json"), options_); });
+  EXPECT_NE(msg.find("frictionAng 30"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("--material 3:type=mohr-coulomb"), std::string::npos) << msg;
+}
+
 TEST(DruckerPragerMatch, TooSteepConeHasNoMatch) {
   EXPECT_FALSE(bridge::plane_strain_mohr_coulomb(10, 0.5, 0));  // 12 alpha^2 = 1.5 >= 1
   const auto vm = bridge::plane_strain_mohr_coulomb(10, 0, 0);  // von Mises: c = k = sigma_y / sqrt(3)

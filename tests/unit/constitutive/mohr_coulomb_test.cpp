@@ -178,6 +178,20 @@ TEST(MohrCoulombReturn, TrescaLimitHasNoApex) {
   EXPECT_CLOSE(u.plastic_strain_increment.head<3>().sum(), 0.0, 1e-15, 0.0);
 }
 
+TEST(MohrCoulombReturn, TrescaWithAFarTensionCutoffStillYields) {
+  // fem2mpm writes T = 1e30 for a frictionless material without -tension ("no cutoff"; the apex c cot(phi)
+  // is at infinity). The elastic test used to take T into its round-off scale, 1e-12 x 1e30: every state
+  // passed as elastic, and a Tresca slope or column in MPM did not fail at all.
+  for (const double t : {1e30, 1e12, kInf}) {
+    SCOPED_TRACE(t);
+    const auto st = strength(0, 0, 50e3, t);
+    const auto u = constitutive::mohr_coulomb_return(rotated(200e3, -100e3, 50e3, 0.7), kElastic, st);
+    EXPECT_NE(u.region, ReturnRegion::Elastic);
+    const Eigen::Vector3d p = principal(u.stress);
+    EXPECT_CLOSE(p[0] - p[2], 100e3, 1e-6, 1e-12);
+  }
+}
+
 TEST(MohrCoulombReturn, TensionCutoffRegions) {
   const double t = 5e3;
   const auto st = strength(30, 10, 10e3, t);  // apex 17.3 kPa > T
