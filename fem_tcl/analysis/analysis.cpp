@@ -27,6 +27,7 @@ Analysis::Analysis(domain::Domain& domain, AnalysisConfig config)
 
 void Analysis::setup() {
   if (version_ == domain_.version()) return;
+  kept_.valid = false;
   nodes_.clear();
   std::unordered_map<const domain::Node*, int> index;
   for (const auto& [tag, n] : domain_.nodes()) {
@@ -158,11 +159,18 @@ void Analysis::setup() {
 }
 
 void Analysis::form_tangent() {
+  const bool elastic = config_.algorithm.elastic_tangent;
+  if (elastic && kept_.valid && kept_.revision == domain_.command_revision() && kept_.c1 == c1_ && kept_.c2 == c2_ &&
+      kept_.c3 == c3_)
+    return;  // the matrix factored last is this one (KeptMatrix)
+  kept_.valid = false;
+  bool fixed = elastic;
   double* values = solver_->matrix().valuePtr();
   solver_->zero_values();
   Matrix8 ke;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     domain::Element& el = *elements_[e];
+    fixed = fixed && el.linear_terms_fixed();
     // `algorithm Newton -initial`: the initial stiffness replaces the current tangent (OpenSees INITIAL_TANGENT)
     // `-elasticTangent` (fem_tcl): the elastic stiffness, the same matrix every step (factored once per dt)
     ke.noalias() = c1_ * (config_.algorithm.elastic_tangent   ? el.elastic_stiffness()
@@ -171,6 +179,7 @@ void Analysis::form_tangent() {
     if (c2_ != 0.0 || c3_ != 0.0) {
       const domain::RayleighFactors& f = el.rayleigh();
       if (c2_ != 0.0) {
+        fixed = fixed && f.beta_k == 0.0 && f.beta_kc == 0.0;
         if (f.beta_k != 0.0) ke.noalias() += (c2_ * f.beta_k) * el.tangent_stiffness();
         if (f.beta_k0 != 0.0) ke.noalias() += (c2_ * f.beta_k0) * el.initial_stiffness();
         if (f.beta_kc != 0.0) ke.noalias() += (c2_ * f.beta_kc) * el.committed_tangent();
@@ -217,6 +226,7 @@ void Analysis::form_tangent() {
     }
   }
   solver_->factor();
+  if (fixed) kept_ = {true, domain_.command_revision(), c1_, c2_, c3_};
 }
 
 void Analysis::form_unbalance() {

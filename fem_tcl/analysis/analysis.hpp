@@ -121,6 +121,15 @@ class Analysis final : public StepProblem {
   Eigen::VectorXd U_, Ud_, Udd_, Ut_, Utd_, Utm1_;
   bool have_previous_ = false;
   double c1_ = 1.0, c2_ = 0.0, c3_ = 0.0;  ///< tangent = c1 K + c2 C + c3 M
+  /// The factored matrix of an `-elasticTangent` algorithm, kept from one form_tangent to the next while
+  /// nothing that enters it can have changed: every element's linear terms fixed (Element::
+  /// linear_terms_fixed), no Rayleigh term on a current or committed tangent, the same c1 c2 c3 and no
+  /// command in between (Domain::command_revision). Reset by setup().
+  struct KeptMatrix {
+    bool valid = false;
+    long revision = 0;
+    double c1 = 0.0, c2 = 0.0, c3 = 0.0;
+  } kept_;
   double step_start_time_ = 0.0;
   double dt_ = 0.0;
   double d_lambda_ = 0.0;

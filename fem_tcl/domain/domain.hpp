@@ -68,6 +68,11 @@ class Domain {
   /// Incremented by every change that alters the dof numbering or the sparsity pattern.
   long version() const { return version_; }
   void touch() { ++version_; }
+  /// Incremented before every command but `analyze` (interpreter.cpp): any command may have changed a
+  /// parameter (a material's moduli, a mass, the Rayleigh factors), so an analysis may keep its elastic
+  /// matrix only while this is unchanged.
+  long command_revision() const { return command_revision_; }
+  void touch_commands() { ++command_revision_; }
 
   // --- time and loads ---
   double time() const { return time_; }
@@ -123,6 +128,7 @@ class Domain {
   double committed_time_ = 0.0;
   Vector2 ground_accel_ = Vector2::Zero();
   long version_ = 0;
+  long command_revision_ = 0;
   double mesh_warn_ratio_ = 0.5;
   bool warned_ratio_ = false;
   bool warned_inverted_ = false;

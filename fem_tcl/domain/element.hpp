@@ -63,6 +63,10 @@ class Element {
   /// getDamp of elements whose materials are rate dependent, e.g. zeroLength with a Viscous material);
   /// nullptr when the element has none.
   virtual const Matrix8* damping_tangent() { return nullptr; }
+  /// Whether elastic_stiffness(), initial_stiffness(), damping_tangent() and lumped_mass() change only
+  /// through commands (setParameter, updateMaterialStage, ...), not with the state: lets an analysis that
+  /// iterates on the elastic matrix keep it between steps (Analysis::form_tangent). False unless said.
+  virtual bool linear_terms_fixed() const { return false; }
   /// Whether the `rayleigh` factors apply to this element (zeroLength: only with -doRayleigh 1).
   virtual bool rayleigh_damped() const { return true; }
   /// Diagonal of the lumped mass matrix.

@@ -27,6 +27,11 @@ class FourNodeQuad final : public domain::Element {
   void update() override;
   const Matrix8& tangent_stiffness() override;
   const Matrix8& initial_stiffness() override;
+  bool linear_terms_fixed() const override {
+    for (const auto& m : materials_)
+      if (!m->initial_tangent_fixed()) return false;
+    return true;
+  }
   const Vector8& lumped_mass() override;
   const Vector8& resisting_force() override;
   void commit_state() override;

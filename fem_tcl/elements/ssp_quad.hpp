@@ -31,6 +31,7 @@ class SSPquad final : public domain::Element {
   const Matrix8& initial_stiffness() override { return tangent_stiffness(); }  // as OpenSees (quirk 8)
   /// Kstab + 4 J0 t B0^T C0 B0 with the material's initial tangent C0.
   const Matrix8& elastic_stiffness() override;
+  bool linear_terms_fixed() const override { return material_->initial_tangent_fixed(); }
   const Vector8& lumped_mass() override;
   const Vector8& resisting_force() override;
   void commit_state() override;

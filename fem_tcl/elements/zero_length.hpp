@@ -36,6 +36,11 @@ class ZeroLength final : public domain::Element {
   void update() override;
   const Matrix8& tangent_stiffness() override;
   const Matrix8& initial_stiffness() override;
+  bool linear_terms_fixed() const override {
+    for (const auto& m : mats_)
+      if (!m->tangents_fixed()) return false;
+    return true;
+  }
   const Matrix8* damping_tangent() override;
   bool rayleigh_damped() const override { return do_rayleigh_ == 1; }
   const Vector8& lumped_mass() override { return mass_; }

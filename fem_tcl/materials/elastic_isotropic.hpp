@@ -23,6 +23,7 @@ class ElasticIsotropic final : public NDMaterial {
   const Vector3& stress() const override { return stress_; }
   const Matrix3& tangent() const override { return D_; }
   Matrix3 initial_tangent() const override { return D_; }
+  bool initial_tangent_fixed() const override { return true; }
   void commit_state() override {}
   void revert_to_last_commit() override {}
   void revert_to_start() override;

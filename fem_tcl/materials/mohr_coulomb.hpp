@@ -49,6 +49,7 @@ class MohrCoulomb final : public NDMaterial, public ReducibleStrength {
   /// elastic or initial matrix never pay for it).
   const Matrix3& tangent() const override;
   Matrix3 initial_tangent() const override { return elastic_tangent(); }
+  bool initial_tangent_fixed() const override { return true; }
   void commit_state() override;
   void revert_to_last_commit() override;
   void revert_to_start() override;

@@ -52,6 +52,9 @@ class NDMaterial {
   /// Algorithmic (consistent where the model has one) tangent d stress / d strain at the trial state.
   virtual const Matrix3& tangent() const = 0;
   virtual Matrix3 initial_tangent() const = 0;
+  /// Whether initial_tangent() depends on the parameters alone (not on the state), so that only a command
+  /// (setParameter, updateMaterialStage) can change it; false unless a material says so.
+  virtual bool initial_tangent_fixed() const { return false; }
   virtual void commit_state() = 0;
   virtual void revert_to_last_commit() = 0;
   virtual void revert_to_start() = 0;

@@ -22,6 +22,7 @@ class UniaxialElastic final : public UniaxialMaterial {
   double tangent() const override { return strain_ >= 0.0 ? e_pos_ : e_neg_; }
   double initial_tangent() const override { return e_pos_; }
   double damp_tangent() const override { return eta_; }
+  bool tangents_fixed() const override { return true; }
   // OpenSees' ElasticMaterial keeps no committed state: reverting keeps the trial strain.
   void commit_state() override {}
   void revert_to_last_commit() override {}

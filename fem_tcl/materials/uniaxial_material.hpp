@@ -36,6 +36,9 @@ class UniaxialMaterial {
   /// d stress / d strain at the trial state (OpenSees getTangent).
   virtual double tangent() const = 0;
   virtual double initial_tangent() const = 0;
+  /// Whether initial_tangent() and damp_tangent() depend on the parameters alone (not on the state);
+  /// false unless a material says so.
+  virtual bool tangents_fixed() const { return false; }
   /// d stress / d strain rate at the trial state (OpenSees getDampTangent; 0 for rate-independent models).
   virtual double damp_tangent() const { return 0.0; }
   virtual void commit_state() = 0;

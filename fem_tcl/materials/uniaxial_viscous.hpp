@@ -24,6 +24,7 @@ class UniaxialViscous final : public UniaxialMaterial {
   double tangent() const override { return 0.0; }
   double initial_tangent() const override { return 0.0; }
   double damp_tangent() const override;
+  bool tangents_fixed() const override { return alpha_ == 1.0; }  // the linear dashpot: C at every rate
   void commit_state() override { committed_strain_ = strain_; committed_rate_ = rate_; }
   void revert_to_last_commit() override { strain_ = committed_strain_; rate_ = committed_rate_; }
   void revert_to_start() override { strain_ = rate_ = committed_strain_ = committed_rate_ = 0.0; }

@@ -48,6 +48,8 @@ int dispatch(ClientData data, Tcl_Interp* interp, int objc, Tcl_Obj* const objv[
   std::string name(entry.name);
   for (int i = 0; i < entry.name_words && i < static_cast<int>(words.size()); ++i) name += " " + words[i];
   try {
+    // Any command but analyze may change a parameter an analysis keeps (Domain::command_revision).
+    if (entry.name != "analyze") binding->context->domain.touch_commands();
     common::CommandArgs args(name, std::string(entry.usage), std::move(words));
     const std::string result = entry.run(*binding->context, args);
     Tcl_SetObjResult(interp, Tcl_NewStringObj(result.c_str(), static_cast<int>(result.size())));

@@ -547,3 +547,31 @@ analyze 2
 }
 
 }  // namespace
+
+namespace {
+// `-elasticTangent` algorithms keep the factored elastic matrix from step to step (Analysis::KeptMatrix);
+// any command in between makes the next step form it again. algorithm Linear takes one solve per step on
+// that matrix, so a kept matrix of the old modulus would give a wrong displacement (u1 + K1^-1 (F2 - K2 u1)
+// instead of K2^-1 F2).
+TEST(ElasticTangentReuse, AParameterChangedBetweenAnalyzeCallsIsSeen) {
+  Interpreter interp;
+  interp.eval(R"tcl(
+    model basic -ndm 2 -ndf 2
+    node 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1
+    fix 1 1 1; fix 2 1 1
+    nDMaterial ElasticIsotropic 1 1000.0 0.25
+    element quad 1 1 2 3 4 1.0 PlaneStrain 1
+    timeSeries Linear 1
+    pattern Plain 1 1 { load 3 1.0 0.0; load 4 1.0 0.0 }
+    constraints Plain; numberer Plain; system UmfPack
+    test NormDispIncr 1e-12 5; algorithm Linear -elasticTangent
+    integrator LoadControl 1.0; analysis Static
+    analyze 1
+  )tcl");
+  const double u1 = std::stod(interp.eval("nodeDisp 3 1"));
+  interp.eval("analyze 1");  // load factor 2, nothing changed: the kept matrix is right
+  EXPECT_CLOSE(std::stod(interp.eval("nodeDisp 3 1")), 2.0 * u1, 1e-12, 0.0);
+  interp.eval("setParameter -val 4000.0 -ele 1 E\nanalyze 1");  // load factor 3 on a 4x stiffer element
+  EXPECT_CLOSE(std::stod(interp.eval("nodeDisp 3 1")), 3.0 * u1 / 4.0, 1e-12, 0.0);
+}
+}  // namespace
