@@ -93,6 +93,7 @@ PressureIndependMultiYield::PressureIndependMultiYield(int tag, const PressureIn
     check(p.surfaces >= 2 && p.backbone.size() == 2 * static_cast<std::size_t>(p.surfaces),
           "expected 2 x |noYieldSurf| backbone values (shear strain, G / Gmax) for at least 2 surfaces");
   }
+  defined_ = p;
   set_up_surfaces();
   committed_.shear_modulus = p.shear_modulus;
   committed_.bulk_modulus = p.bulk_modulus;
@@ -104,7 +105,11 @@ PressureIndependMultiYield::PressureIndependMultiYield(int tag, const PressureIn
 // backbone. Between surfaces m and m+1 the elasto-plastic modulus 2 d tau / d gamma = 2 G H / (2 G + H) of
 // the segment gives H = 2 G Hep / (2 G - Hep); the last (failure) surface has H = 0.
 void PressureIndependMultiYield::set_up_surfaces() {
+  params_ = defined_;  // reduced by the factor of a strength reduction (reducible_strength.hpp)
   auto& p = params_;
+  p.cohesion /= strength_factor_;
+  p.friction_deg = std::atan(std::tan(p.friction_deg * 3.14159265358979 / 180.0) / strength_factor_) * 180.0 / 3.14159265358979;
+  for (std::size_t i = 1; i < p.backbone.size(); i += 2) p.backbone[i] /= strength_factor_;
   const std::string where = "nDMaterial PressureIndependMultiYield " + std::to_string(tag());
   const double G = p.shear_modulus, pref = -p.ref_pressure;  // compression negative, as OpenSees stores it
   const int n = p.surfaces;
@@ -209,7 +214,14 @@ Matrix3 PressureIndependMultiYield::initial_tangent() const {
 void PressureIndependMultiYield::start_plastic(State& s) const {
   s.plastic_started = true;
   if (mean_stress(s.stress) > 0.0 && params_.friction_deg > 0.0) s.stress = deviator(s.stress);  // no tension
-  scale_to_confinement(s);
+  scale_to_confinement(s, true);
+  place_surfaces(s);
+}
+
+// The active surface is the outermost one the stress lies beyond; surfaces 1..active are centred so that the
+// stress lies on them. Beyond the failure surface the stress is brought onto it.
+void PressureIndependMultiYield::place_surfaces(State& s) const {
+  s.active = 0;
   const Vector6 dev = deviator(s.stress);
   if (std::sqrt(contract(dev, dev)) == 0.0) return;
   const int n = params_.surfaces;
@@ -230,15 +242,30 @@ void PressureIndependMultiYield::start_plastic(State& s) const {
   centre_on_stress(s);
 }
 
-void PressureIndependMultiYield::scale_to_confinement(State& s) const {
+void PressureIndependMultiYield::scale_to_confinement(State& s, bool moduli) const {
   if (params_.friction_deg == 0.0) return;
   const double height = -(mean_stress(s.stress) - residual_pressure_);
   const double scale = std::pow(-height / (-params_.ref_pressure - residual_pressure_), params_.pressure_exponent);
-  s.shear_modulus *= scale;
-  s.bulk_modulus *= scale;
+  if (moduli) {
+    s.shear_modulus *= scale;
+    s.bulk_modulus *= scale;
+  }
   for (std::size_t m = 1; m < s.surfaces.size(); ++m) {
     s.surfaces[m] = Surface{Vector6::Zero(), s.surfaces[m].size * height, s.surfaces[m].modulus * scale};
   }
+}
+
+void PressureIndependMultiYield::set_strength_reduction(double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor))
+    throw common::InputError("nDMaterial PressureIndependMultiYield " + std::to_string(tag()),
+                             "expected a strength reduction factor > 0, got " + std::to_string(factor));
+  strength_factor_ = factor;
+  set_up_surfaces();  // the reference surfaces of the reduced strength
+  if (committed_.plastic_started) {
+    scale_to_confinement(committed_, false);
+    place_surfaces(committed_);
+  }
+  revert_to_last_commit();
 }
 
 // Surfaces 1..active re-centred on the line from the origin through the stress, so the stress lies on each.
@@ -447,7 +474,7 @@ std::optional<std::vector<double>> PressureIndependMultiYield::response(std::str
 }
 
 nlohmann::json PressureIndependMultiYield::to_json() const {
-  const auto& p = params_;
+  const auto& p = defined_;
   return nlohmann::json{{"name", std::to_string(tag())},
                         {"type", "PressureIndependMultiYield"},
                         {"rho", p.density},

@@ -26,6 +26,7 @@
 
 #include "common/command_args.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
+#include "fem_tcl/materials/reducible_strength.hpp"
 
 namespace fem::materials {
 
@@ -43,7 +44,7 @@ struct PressureIndependMultiYieldParameters {
   std::vector<double> backbone;
 };
 
-class PressureIndependMultiYield final : public NDMaterial {
+class PressureIndependMultiYield final : public NDMaterial, public ReducibleStrength {
  public:
   /// Validates (common::InputError naming the material) and generates the surfaces.
   PressureIndependMultiYield(int tag, const PressureIndependMultiYieldParameters& params);
@@ -52,6 +53,12 @@ class PressureIndependMultiYield final : public NDMaterial {
   /// Plane strain only (OpenSees returns no plane-stress copy): plane stress throws common::InputError.
   std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
   std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<PressureIndependMultiYield>(*this); }
+  ReducibleStrength* reducible_strength() override { return this; }
+  /// c / F, atan(tan phi / F) and the user backbone's G / Gmax / F (reducible_strength.hpp): the surfaces are
+  /// generated again for that strength and, once plastic, set around the committed stress as at the switch
+  /// (the committed stress brought onto the failure surface where it lies outside it). G and K are kept.
+  void set_strength_reduction(double factor) override;
+  double strength_reduction() const override { return strength_factor_; }
 
   void set_trial_strain(const Vector3& strain) override;
   const Vector3& strain() const override { return trial_.strain; }
@@ -95,7 +102,8 @@ class PressureIndependMultiYield final : public NDMaterial {
 
   void set_up_surfaces();
   void start_plastic(State& s) const;                      // elast2Plast
-  void scale_to_confinement(State& s) const;               // paramScaling
+  void place_surfaces(State& s) const;                     // elast2Plast's active-surface search
+  void scale_to_confinement(State& s, bool moduli) const;  // paramScaling
   static void centre_on_stress(State& s);                  // initSurfaceUpdate
   void plastic_update(const Vector6& strain_increment);    // getStress, stage 1
   void correct_stress(Vector6& dev, bool crossed);         // stressCorrection
@@ -105,7 +113,9 @@ class PressureIndependMultiYield final : public NDMaterial {
   Matrix3 elastic_matrix(double G, double K) const;
   void form_tangent();
 
-  PressureIndependMultiYieldParameters params_;
+  PressureIndependMultiYieldParameters defined_;  ///< as given (after OpenSees' corrections)
+  PressureIndependMultiYieldParameters params_;   ///< in force: reduced by strength_factor_, derived values set
+  double strength_factor_ = 1.0;
   double residual_pressure_ = 0;  ///< p_r (OpenSees' residualPress)
   int stage_ = 0;
   State committed_, trial_;

@@ -1,8 +1,8 @@
 # An 8 m cut in soft clay, 1:1.5 (33.7 degrees), on a 6 m layer of stiffer clay: undrained, total stress,
 # the OpenSees way (nDMaterial PressureIndependMultiYield, frictionAng 0), one material per layer, sides on
 # rollers, base fixed. The cut cannot stand: its plane-strain strength is 2 c / sqrt(3) = 10.4 kPa (cohesi
-# c = 9 kPa; the foundation's 40.4 kPa), and strength reduction on the same model with MohrCoulomb phi = 0 of
-# those strengths (fem_tcl strengthReduction, 1 m cells) gives a factor of safety of 0.59. fem2mpm maps each
+# c = 9 kPa; the foundation's 40.4 kPa), and strength reduction (fem_tcl strengthReduction, 1 m cells, -fos yes)
+# gives a factor of safety of 0.57 (0.59 for MohrCoulomb phi = 0 of the same strengths, -soil tresca). fem2mpm maps each
 # layer to Tresca with its plane-strain strength (bridge/multi_yield_match.hpp) and MPM carries the runout
 # (sample run: 2.8 m of travel, 28 % of the mass moving, nearly at rest at 3.5 s).
 #
@@ -14,7 +14,11 @@
 # Test run (tests/regression/study/examples_sample_runs_test.py: these values replace the sample run's):
 #   --duration 1 --ppd 1 -- -cell 2
 #
-# Usage: fem_tcl clay_slope.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05?
+# Usage: fem_tcl clay_slope.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-soil multiyield|tresca?
+#        ?-fos no|yes?
+# -fos yes: the factor of safety instead of the collapse (strengthReduction after the gravity stage, KrylovNewton,
+# NormDispIncr 1e-6 100), printed as "FoS F". -soil tresca: MohrCoulomb phi = 0 with each layer's plane-strain
+# strength 2 c / sqrt(3) and the same E and nu, the model fem2mpm hands to MPM.
 # Units kN, m, s, kPa, Mg/m3. Geometry (m): foundation 0 <= x <= 60, 0 <= y <= 6; the cut on top with
 # corners (0, 6), (32, 6), (20, 14), (0, 14): crest at x = 20, toe at x = 32. -cell must divide 6, 8 and 32
 # (1 or 2), so that the cut's base nodes fall on the foundation's top nodes.
@@ -25,10 +29,10 @@
 # -record s.
 source [file join [file dirname [info script]] hybrid_stages.tcl]
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} {
-    error "clay_slope.tcl: missing <outdir>; usage: fem_tcl clay_slope.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05?"
+    error "clay_slope.tcl: missing <outdir>; usage: fem_tcl clay_slope.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-soil multiyield|tresca? ?-fos no|yes?"
 }
 set outdir [lindex $argv 0]
-array set opt {-cell 1.0 -tend 0.5 -dt 0.005 -record 0.05}
+array set opt {-cell 1.0 -tend 0.5 -dt 0.005 -record 0.05 -soil multiyield -fos no}
 parse_options clay_slope.tcl opt [lrange $argv 1 end]
 file mkdir $outdir
 set h $opt(-cell)
@@ -39,8 +43,17 @@ set K 4.667e4
 
 wipe
 model basic -ndm 2 -ndf 2
-nDMaterial PressureIndependMultiYield 1 2 $rho $G $K 9.0 0.1
-nDMaterial PressureIndependMultiYield 2 2 $rho $G $K 35.0 0.1
+if {$opt(-soil) eq "multiyield"} {
+    nDMaterial PressureIndependMultiYield 1 2 $rho $G $K 9.0 0.1
+    nDMaterial PressureIndependMultiYield 2 2 $rho $G $K 35.0 0.1
+} elseif {$opt(-soil) eq "tresca"} {
+    set E [expr {9.0 * $K * $G / (3.0 * $K + $G)}]
+    set nu [expr {(3.0 * $K - 2.0 * $G) / (2.0 * (3.0 * $K + $G))}]
+    nDMaterial MohrCoulomb 1 $E $nu $rho 0.0 [expr {2.0 * 9.0 / sqrt(3.0)}] 0.0
+    nDMaterial MohrCoulomb 2 $E $nu $rho 0.0 [expr {2.0 * 35.0 / sqrt(3.0)}] 0.0
+} else {
+    error "clay_slope.tcl: -soil must be multiyield or tresca, got '$opt(-soil)'"
+}
 set nxF [expr {int(round(60.0 / $h))}]
 set nyF [expr {int(round(6.0 / $h))}]
 block2D $nxF $nyF 1 1 SSPquad "2 PlaneStrain 1.0 0.0 [expr {-$rho * $g}]" {1 0 0 2 60 0 3 60 6 4 0 6}
@@ -58,5 +71,14 @@ fixX 0.0 1 0 -tol $tol     ;# left side on rollers
 fixX 60.0 1 0 -tol $tol    ;# right side on rollers
 
 gravity_stage
-collapse_stage {1 2} $outdir $opt(-tend) $opt(-dt) $opt(-record)
+if {$opt(-fos) ni {no yes}} { error "clay_slope.tcl: -fos must be no or yes, got '$opt(-fos)'" }
+if {$opt(-fos) eq "yes"} {
+    loadConst -time 0.0
+    foreach m {1 2} { updateMaterialStage -material $m -stage 1 }
+    test NormDispIncr 1.0e-6 100
+    algorithm KrylovNewton
+    puts stdout "FoS [strengthReduction -materials {1 2}]"
+} else {
+    collapse_stage {1 2} $outdir $opt(-tend) $opt(-dt) $opt(-record)
+}
 puts stdout "clay_slope: [llength [getNodeTags]] nodes, [llength [getEleTags]] SSPquads, $ties tied node pairs"

@@ -95,7 +95,10 @@ proc parse_options {script arr words} {
     if {[llength $words] % 2 != 0} { error "$script: option '[lindex $words end]' has no value" }
     foreach {key value} $words {
         if {![info exists opt($key)]} { error "$script: unknown option '$key' (known: [lsort [array names opt]])" }
-        if {![string is double -strict $value] || !($value > 0)} { error "$script: expected a number > 0 after '$key', got '$value'" }
+        # a numeric option takes a number > 0; a word option (its default a word) any word, which the script checks
+        if {[string is double -strict $opt($key)] && (![string is double -strict $value] || !($value > 0))} {
+            error "$script: expected a number > 0 after '$key', got '$value'"
+        }
         set opt($key) $value
     }
 }

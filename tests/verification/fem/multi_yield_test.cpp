@@ -209,6 +209,22 @@ TEST(PressureIndependMultiYield, FrictionScalesTheStrengthWithTheConfinementAtTh
   EXPECT_NEAR(m.initial_tangent()(2, 2), p.shear_modulus * std::sqrt((p_conf + p_r) / (80.0 + p_r)), 1e-6);
 }
 
+TEST(PressureIndependMultiYield, StrengthReductionDividesTheStrength) {
+  // strengthReduction's factor F (reducible_strength.hpp): cohesi / F, so the pure-shear strength halves at
+  // F = 2; from a plastic state the surfaces are set again around the committed stress.
+  const auto p = clay();
+  const Backbone b(p);
+  ShearDriver d(p);
+  d.shear(2e-4);
+  ASSERT_NE(d.material.reducible_strength(), nullptr);
+  d.material.set_strength_reduction(2.0);
+  EXPECT_EQ(d.material.strength_reduction(), 2.0);
+  double tau = 0.0;
+  for (int i = 1; i <= 400; ++i) tau = d.shear(2e-4 + i * 1e-3);
+  EXPECT_NEAR(tau, 0.5 * b.tau_f / kOct, 1e-9 * b.tau_f);
+  EXPECT_THROW(d.material.set_strength_reduction(0.0), common::InputError);
+}
+
 TEST(PressureIndependMultiYield, RejectsBadParameters) {
   auto p = clay();
   p.shear_modulus = 0.0;
