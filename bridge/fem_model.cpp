@@ -274,12 +274,15 @@ void add_material(FemModel& model, const json& j) {
     if (it != j.end() && it->is_number()) return it->get<double>();
     return std::nullopt;
   };
-  if (m.type == "DruckerPrager") {  // fem_tcl's entry (OpenSees 3.8 writes invalid JSON for it)
-    const auto K = opt("K"), G = opt("G");
+  // E and nu from a bulk and a shear modulus: E = 9 K G / (3 K + G), nu = (3 K - 2 G) / (2 (3 K + G)).
+  const auto from_bulk_and_shear = [&m](std::optional<double> K, std::optional<double> G) {
     if (K && G && 3 * *K + *G > 0) {
       m.E = 9 * *K * *G / (3 * *K + *G);
       m.nu = (3 * *K - 2 * *G) / (2 * (3 * *K + *G));
     }
+  };
+  if (m.type == "DruckerPrager") {  // fem_tcl's entry (OpenSees 3.8 writes invalid JSON for it)
+    from_bulk_and_shear(opt("K"), opt("G"));
     m.rho = opt("density");
     m.dp_sigma_y = opt("sigma_y");
     m.dp_rho = opt("rho");
@@ -288,11 +291,7 @@ void add_material(FemModel& model, const json& j) {
     return;
   }
   if (m.type == "PressureIndependMultiYield") {  // fem_tcl's entry (multi_yield_match.hpp)
-    const auto G = opt("refShearModul"), K = opt("refBulkModul");
-    if (K && G && 3 * *K + *G > 0) {
-      m.E = 9 * *K * *G / (3 * *K + *G);
-      m.nu = (3 * *K - 2 * *G) / (2 * (3 * *K + *G));
-    }
+    from_bulk_and_shear(opt("refBulkModul"), opt("refShearModul"));
     m.rho = opt("rho");
     m.multi_yield_cohesion = opt("cohesi");
     m.multi_yield_friction_deg = opt("frictionAng");
