@@ -12,6 +12,7 @@ namespace {
 
 constexpr double kLowLimit = 1e-15;  // OpenSees' LOW_LIMIT
 constexpr double kUpLimit = 1e30;    // OpenSees' UP_LIMIT: the plastic modulus of a surface that adds no strain
+constexpr double kDegree = 3.14159265358979 / 180.0;  // with the value of pi this material has in OpenSees
 
 /// a : b of two symmetric tensors stored as (xx yy zz xy yz xz).
 double contract(const Vector6& a, const Vector6& b) {
@@ -55,6 +56,12 @@ double smallest_nonnegative_root(double A, double B, double C, const char* what)
   if (x1 < 0.0) return x2;
   if (x2 < 0.0) return x1;
   return std::min(x1, x2);
+}
+
+/// f = 3/2 (s - a) : (s - a) - M^2 of a surface at the deviator s: > 0 outside it (OpenSees yieldFunc).
+double yield_value(const PressureIndependMultiYield::Surface& f, const Vector6& dev) {
+  const Vector6 r = dev - f.center;
+  return 1.5 * contract(r, r) - f.size * f.size;
 }
 
 /// Engineering strain (exx eyy gxy) -> plane-strain tensor (xx yy zz xy yz xz).
@@ -108,7 +115,7 @@ void PressureIndependMultiYield::set_up_surfaces() {
   params_ = defined_;  // reduced by the factor of a strength reduction (reducible_strength.hpp)
   auto& p = params_;
   p.cohesion /= strength_factor_;
-  p.friction_deg = std::atan(std::tan(p.friction_deg * 3.14159265358979 / 180.0) / strength_factor_) * 180.0 / 3.14159265358979;
+  p.friction_deg = std::atan(std::tan(p.friction_deg * kDegree) / strength_factor_) / kDegree;
   for (std::size_t i = 1; i < p.backbone.size(); i += 2) p.backbone[i] /= strength_factor_;
   const std::string where = "nDMaterial PressureIndependMultiYield " + std::to_string(tag());
   const double G = p.shear_modulus, pref = -p.ref_pressure;  // compression negative, as OpenSees stores it
@@ -122,7 +129,7 @@ void PressureIndependMultiYield::set_up_surfaces() {
     double peak = 0.0, cone = 1.0;
     residual_pressure_ = 0.0;
     if (p.friction_deg > 0.0) {
-      const double sin_phi = std::sin(p.friction_deg * 3.14159265358979 / 180.0);
+      const double sin_phi = std::sin(p.friction_deg * kDegree);
       const double m_nys = 6.0 * sin_phi / (3.0 - sin_phi);
       residual_pressure_ = 3.0 * p.cohesion / (std::sqrt(2.0) * m_nys);
       cone = -(pref - residual_pressure_);
@@ -165,7 +172,7 @@ void PressureIndependMultiYield::set_up_surfaces() {
           throw common::InputError(where, "invalid friction angle from the backbone: change refPress or the G/Gmax curve");
         residual_pressure_ = std::max(2.0 * p.cohesion / m_nys, 0.01 * pref);
         cone = -(pref - residual_pressure_);
-        p.friction_deg = std::asin(sin_phi) * 180.0 / 3.14159265358979;
+        p.friction_deg = std::asin(sin_phi) / kDegree;
       }
     } else {
       p.cohesion = std::sqrt(3.0) / 2.0 * tmax;
@@ -174,9 +181,8 @@ void PressureIndependMultiYield::set_up_surfaces() {
     for (int m = 1; m < n; ++m) {
       const double e1 = g[2 * (m - 1)], t1 = G * g[2 * (m - 1) + 1] * e1;
       const double e2 = g[2 * m], t2 = G * g[2 * m + 1] * e2;
-      const double h = (2.0 * G - 2.0 * (t2 - t1) / (e2 - e1) <= 0.0)
-                           ? kUpLimit
-                           : 2.0 * G * (2.0 * (t2 - t1) / (e2 - e1)) / (2.0 * G - 2.0 * (t2 - t1) / (e2 - e1));
+      const double hep = 2.0 * (t2 - t1) / (e2 - e1);
+      const double h = 2.0 * G - hep <= 0.0 ? kUpLimit : 2.0 * G * hep / (2.0 * G - hep);
       if (!(h > 0.0))
         throw common::InputError(where, "surface " + std::to_string(m) + " has a plastic modulus <= 0: modify the G/Gmax curve");
       s[m].size = std::sqrt(3.0) * t1 / cone;
@@ -226,11 +232,10 @@ void PressureIndependMultiYield::place_surfaces(State& s) const {
   if (std::sqrt(contract(dev, dev)) == 0.0) return;
   const int n = params_.surfaces;
   int k = 0;
-  while (1.5 * contract(dev - s.surfaces[k + 1].center, dev - s.surfaces[k + 1].center) -
-             s.surfaces[k + 1].size * s.surfaces[k + 1].size > 0.0) {
+  while (yield_value(s.surfaces[k + 1], dev) > 0.0) {
     ++k;
     if (k == n) {  // outside the failure surface: brought onto it (its centre is the origin, it never moves)
-      const double sz = s.surfaces[n].size, diff = 1.5 * contract(dev, dev) - sz * sz;
+      const double sz = s.surfaces[n].size, diff = yield_value(s.surfaces[n], dev);
       const Vector6 on_surface = std::abs(diff) > kLowLimit ? Vector6(dev * (sz / std::sqrt(diff + sz * sz))) : dev;
       s.stress = with_mean(on_surface, mean_stress(s.stress));
       s.active = n;
@@ -302,9 +307,7 @@ void PressureIndependMultiYield::set_trial_strain(const Vector3& strain) {
 bool PressureIndependMultiYield::crosses_next_surface(const Vector6& dev) const {
   const int n = params_.surfaces;
   if (trial_.active == n) return false;
-  const Surface& next = trial_.surfaces[trial_.active + 1];
-  const Vector6 r = dev - next.center;
-  return 1.5 * contract(r, r) - next.size * next.size > 0.0;
+  return yield_value(trial_.surfaces[trial_.active + 1], dev) > 0.0;
 }
 
 void PressureIndependMultiYield::plastic_update(const Vector6& de) {
@@ -377,11 +380,10 @@ void PressureIndependMultiYield::scale_onto_surface(Vector6& dev, int k) const {
   const int n = params_.surfaces;
   const Surface& s = trial_.surfaces[k];
   for (int guard = 0; guard < 100; ++guard) {
-    const Vector6 rel = dev - s.center;
-    const double diff = 1.5 * contract(rel, rel) - s.size * s.size;
+    const double diff = yield_value(s, dev);
     if (k < n && diff < 0.0) {
       const double ms = std::sqrt(s.size * s.size + diff);
-      dev += std::max((s.size - ms) / ms, 1e-13) * rel;
+      dev += std::max((s.size - ms) / ms, 1e-13) * (dev - s.center);
       continue;
     }
     if (k == n && std::abs(diff) > kLowLimit) dev *= s.size / std::sqrt(diff + s.size * s.size);
