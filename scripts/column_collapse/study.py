@@ -196,9 +196,9 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
     cx, cy = int(round((x1 - x0) / h)), int(round((y1 - y0) / h))
     # mesh.generator lattice: node id = i + j * nodes_x from the lower-left HALO node (GIMP ring).
     nodes_x, nodes_y = cx + 3, cy + 3
-    base = [i + j * nodes_x for j in range(nodes_y) for i in range(nodes_x) if y0 + (j - 1) * h <= 1e-9 * h]
+    base_nodes = [i + j * nodes_x for j in range(nodes_y) for i in range(nodes_x) if y0 + (j - 1) * h <= 1e-9 * h]
     with open(os.path.join(d, "entity_sets.json"), "w") as f:
-        json.dump({"node_sets": [{"id": 1, "set": base}]}, f)
+        json.dump({"node_sets": [{"id": 1, "set": base_nodes}]}, f)
     duration = scene.t_total if duration is None else duration
     nsteps, dt = mpm_nsteps(scene, duration)
     out_every = scene.out_every if out_every is None else out_every
