@@ -71,13 +71,8 @@ fixX 0.0 1 0 -tol $tol     ;# left side on rollers
 fixX 60.0 1 0 -tol $tol    ;# right side on rollers
 
 gravity_stage
-if {$opt(-fos) ni {no yes}} { error "clay_slope.tcl: -fos must be no or yes, got '$opt(-fos)'" }
-if {$opt(-fos) eq "yes"} {
-    loadConst -time 0.0
-    foreach m {1 2} { updateMaterialStage -material $m -stage 1 }
-    test NormDispIncr 1.0e-6 100
-    algorithm KrylovNewton
-    puts stdout "FoS [strengthReduction -materials {1 2}]"
+if {[fos_asked clay_slope.tcl $opt(-fos)]} {
+    fos_stage {1 2}
 } else {
     collapse_stage {1 2} $outdir $opt(-tend) $opt(-dt) $opt(-record)
 }

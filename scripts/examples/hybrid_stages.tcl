@@ -72,6 +72,25 @@ proc collapse_stage {materials outdir tend dt drec} {
     puts stdout [format "collapse stage: t = %.4g s reached, min corner det J %.4g (element %d)" $t [lindex $mj 0] [lindex $mj 1]]
 }
 
+# Instead of the collapse (the script's -fos yes): the factor of safety of the materials given by strength
+# reduction from the gravity state (fem_tcl strengthReduction, the materials plastic, KrylovNewton and
+# NormDispIncr 1e-6 100, a tolerance every material here can meet), printed as "FoS F" and returned.
+proc fos_stage {materials} {
+    loadConst -time 0.0
+    foreach m $materials { updateMaterialStage -material $m -stage 1 }
+    test NormDispIncr 1.0e-6 100
+    algorithm KrylovNewton
+    set F [strengthReduction -materials $materials]
+    puts stdout "FoS $F"
+    return $F
+}
+
+# Whether the script's -fos option (no or yes) asks for the factor of safety.
+proc fos_asked {script value} {
+    if {$value ni {no yes}} { error "$script: -fos must be no or yes, got '$value'" }
+    return [expr {$value eq "yes"}]
+}
+
 # Transient steps of dt from the current time to tend (the last one shortened to land on tend), each halved
 # up to 6 times where it fails; an error naming the stage (label) and the time where it fails for good.
 # Returns the time reached.

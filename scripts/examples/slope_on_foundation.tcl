@@ -1,7 +1,7 @@
 # A 45-degree cut slope, 10 m high, on a 4 m foundation layer: two block2D blocks tied along their shared
 # edge, sides on rollers, base fixed; Mohr-Coulomb soil that cannot stand at 45 degrees (phi 25, c 2 kPa:
-# the infinite-slope factor tan(phi) / tan(45) is 0.47), so the slope fails as soon as the material turns
-# plastic, and the runout is carried by MPM.
+# the infinite-slope factor tan(phi) / tan(45) is 0.47; strength reduction, -fos yes: 0.68), so the slope fails
+# as soon as the material turns plastic, and the runout is carried by MPM.
 #
 # Sample run (about 15 s; figures and summary.md in results/slope_on_foundation):
 #   scripts/hybrid_run.py scripts/examples/slope_on_foundation.tcl --transfer 0.5 --duration 3 --out results/slope_on_foundation --units kN --ppd 2 --cfl 0.4 --base-friction 0.47
@@ -11,19 +11,19 @@
 # Test run (tests/regression/study/examples_sample_runs_test.py: these values replace the sample run's):
 #   --duration 1 --ppd 1 -- -cell 2
 #
-# Usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05?
+# Usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-fos no|yes?
 # Units kN, m, s, kPa, Mg/m3. Geometry (m): foundation 0 <= x <= 44, 0 <= y <= 4; slope block on top with
 # corners (0, 4), (24, 4), (14, 14), (0, 14): crest at x = 14, toe at x = 24, slope 1:1. -cell must divide
 # 4, 10, 14 and 24 (1 or 2), so that the slope block's base nodes fall on the foundation's top nodes.
 # Soil (both blocks one material): E = 20 MPa, nu = 0.3, rho = 1.9 Mg/m3, phi = 25, c = 2 kPa, psi = 0.
 # Stages: elastic gravity (static), then MohrCoulomb and Newmark to -tend; the recorders of the
-# hybrid_run.py contract every -record s.
+# hybrid_run.py contract every -record s. -fos yes: the factor of safety instead (hybrid_stages.tcl fos_stage).
 source [file join [file dirname [info script]] hybrid_stages.tcl]
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} {
-    error "slope_on_foundation.tcl: missing <outdir>; usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05?"
+    error "slope_on_foundation.tcl: missing <outdir>; usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-fos no|yes?"
 }
 set outdir [lindex $argv 0]
-array set opt {-cell 1.0 -tend 0.5 -dt 0.005 -record 0.05}
+array set opt {-cell 1.0 -tend 0.5 -dt 0.005 -record 0.05 -fos no}
 parse_options slope_on_foundation.tcl opt [lrange $argv 1 end]
 file mkdir $outdir
 set h $opt(-cell)
@@ -53,5 +53,9 @@ fixX 0.0 1 0 -tol $tol     ;# left side on rollers
 fixX 44.0 1 0 -tol $tol    ;# right side on rollers
 
 gravity_stage
-collapse_stage {1} $outdir $opt(-tend) $opt(-dt) $opt(-record)
+if {[fos_asked slope_on_foundation.tcl $opt(-fos)]} {
+    fos_stage {1}
+} else {
+    collapse_stage {1} $outdir $opt(-tend) $opt(-dt) $opt(-record)
+}
 puts stdout "slope_on_foundation: [llength [getNodeTags]] nodes, [llength [getEleTags]] SSPquads, $ties tied node pairs"

@@ -11,7 +11,10 @@ Physics checks, from the examples' headers (each example is built to fail):
   mass is moving (measured, small versions: slope_on_foundation 1.4 m and 28 %, embankment_two_layers 1.07 m
   and 13 %; each ~25 s of wall time on the loaded 2-core machine, ~3 s of CPU);
 - no particle crosses a roller wall given in the sample run (--left-wall/--right-wall roller at the
-  --extent's xmin/xmax), within half a cell.
+  --extent's xmin/xmax), within half a cell;
+- the script's own factor of safety (`-fos yes`, strength reduction from the gravity state, with the test
+  run's script arguments) is below 1 (slope_on_foundation, embankment_two_layers, clay_slope: 0.86, 0.77,
+  0.64 on the test run's coarse cells; 0.68, 0.59, 0.57 on the default ones).
 """
 import argparse
 import csv
@@ -117,6 +120,15 @@ def main():
                     check("%s: no particle left of the left wall" % name, x.min() >= w["x"] - 0.5 * cell, "min x %.4g" % x.min())
                 else:
                     check("%s: no particle right of the right wall" % name, x.max() <= w["x"] + 0.5 * cell, "max x %.4g" % x.max())
+            # Built to fail: the script's own factor of safety (-fos yes, hybrid_stages.tcl fos_stage) is below 1.
+            script_args = words[words.index("--") + 1:] if "--" in words else []
+            fos_dir = os.path.join(out, "fos")
+            r = subprocess.run([os.path.join(args.bin, "fem_tcl"), ex, fos_dir] + script_args + ["-fos", "yes"],
+                               cwd=out, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            fos = [float(line.split()[1]) for line in r.stdout.splitlines() if line.startswith("FoS ")]
+            check("%s: -fos yes prints a factor of safety" % name, r.returncode == 0 and len(fos) == 1, r.stdout[-500:])
+            if fos:
+                check("%s: factor of safety below 1" % name, 0.2 < fos[0] < 1.0, "%.4g" % fos[0])
         finally:
             shutil.rmtree(out, ignore_errors=True)
     check("at least two examples with a sample run", runs >= 2, str(runs))
