@@ -306,8 +306,9 @@ def main(argv=None):
         walls["fem"] = pipeline.run_fem_script(bins, os.path.abspath(args.model), fem_dir, script_args)
         fem_end = metrics.fem_last_time(fem_dir)
         if args.transfer > fem_end + 1e-9:
-            pipeline.die(PROG, "--transfer %g: the FEM run recorded only to t = %g s (%s)"
-                         % (args.transfer, fem_end, os.path.join(fem_dir, "disp.out")))
+            pipeline.die(PROG, "--transfer %g: the FEM run recorded only to t = %g s (%s; run the script longer, "
+                               "e.g. with its end-time argument after --, such as -- -tend %g for the examples)"
+                         % (args.transfer, fem_end, os.path.join(fem_dir, "disp.out"), args.transfer))
         stage = "fem2mpm"
         print("%s: transfer at t = %g s: fem2mpm %s" % (PROG, args.transfer, " ".join(forward)), flush=True)
         walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, args.transfer,

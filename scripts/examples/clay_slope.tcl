@@ -4,7 +4,8 @@
 # c = 9 kPa; the foundation's 40.4 kPa), and strength reduction (fem_tcl strengthReduction, 1 m cells, -fos yes)
 # gives a factor of safety of 0.57 (0.59 for MohrCoulomb phi = 0 of the same strengths, -soil tresca). fem2mpm maps each
 # layer to Tresca with its plane-strain strength (bridge/multi_yield_match.hpp) and MPM carries the runout
-# (sample run: 2.8 m of travel, 28 % of the mass moving, nearly at rest at 3.5 s).
+# (sample run: 2.8 m of travel, 28 % of the mass moving, nearly at rest at 3.5 s; transferred at 0 s instead
+# 2.64 m, at 1 s (with -- -tend 1) 2.82 m).
 #
 # Sample run (figures and summary.md in results/clay_slope):
 #   scripts/hybrid_run.py scripts/examples/clay_slope.tcl --transfer 0.5 --duration 3 --out results/clay_slope --units kN --ppd 2 --cfl 0.4 --base-friction 0.4
