@@ -40,7 +40,7 @@ void MohrCoulomb::update_constants() {
   strength_ = {phi, psi, params_.cohesion / f,
                params_.tension ? *params_.tension / f : std::numeric_limits<double>::infinity()};
   return_map_ = constitutive::MohrCoulombReturnMap(elasticity_, constitutive::MohrCoulombSurface(strength_));
-  elastic_tangent_ = form_elastic_tangent();
+  elastic_tangent_ = plane_strain_elastic_matrix(elasticity_.bulk_modulus, elasticity_.shear_modulus);
 }
 
 void MohrCoulomb::set_strength_reduction(double factor) {
@@ -50,14 +50,6 @@ void MohrCoulomb::set_strength_reduction(double factor) {
   }
   strength_factor_ = factor;
   update_constants();
-}
-
-Matrix3 MohrCoulomb::form_elastic_tangent() const {
-  const double g = elasticity_.shear_modulus;
-  const double lambda = elasticity_.bulk_modulus - 2.0 * g / 3.0;
-  Matrix3 d;
-  d << lambda + 2.0 * g, lambda, 0.0, lambda, lambda + 2.0 * g, 0.0, 0.0, 0.0, g;
-  return d;
 }
 
 std::unique_ptr<NDMaterial> MohrCoulomb::copy_for(PlaneType plane) const {

@@ -73,7 +73,6 @@ class MohrCoulomb final : public NDMaterial, public ReducibleStrength {
  private:
   /// Plane-strain elastic D, formed with the constants (read at every elastic update and assembly).
   const Matrix3& elastic_tangent() const { return elastic_tangent_; }
-  Matrix3 form_elastic_tangent() const;
   void update_constants();
   void validate() const;
 

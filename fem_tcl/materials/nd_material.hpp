@@ -23,6 +23,15 @@ using Vector3 = Eigen::Vector3d;
 using Matrix3 = Eigen::Matrix3d;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
+/// The plane-strain elastic matrix for (exx, eyy, gxy) of bulk modulus K and shear modulus G:
+/// [[l + 2G, l, 0], [l, l + 2G, 0], [0, 0, G]] with Lame's l = K - 2G/3.
+inline Matrix3 plane_strain_elastic_matrix(double K, double G) {
+  const double lambda = K - 2.0 * G / 3.0;
+  Matrix3 d;
+  d << lambda + 2.0 * G, lambda, 0.0, lambda, lambda + 2.0 * G, 0.0, 0.0, 0.0, G;
+  return d;
+}
+
 /// The 2D formulation an element asks its material for (OpenSees' "PlaneStrain" / "PlaneStress").
 enum class PlaneType { PlaneStrain, PlaneStress };
 

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "common/input_error.hpp"
+#include "constitutive/stress_invariants.hpp"
 
 namespace fem::materials {
 
@@ -18,7 +19,7 @@ constexpr double kDegree = 3.14159265358979 / 180.0;  // with the value of pi th
 double contract(const Vector6& a, const Vector6& b) {
   return a.head<3>().dot(b.head<3>()) + 2.0 * a.tail<3>().dot(b.tail<3>());
 }
-double mean_stress(const Vector6& t) { return (t[0] + t[1] + t[2]) / 3.0; }
+using constitutive::mean_stress;  // (sxx + syy + szz) / 3 of the full (xx yy zz xy yz xz) tensor
 Vector6 deviator(const Vector6& t) {
   Vector6 d = t;
   d.head<3>().array() -= mean_stress(t);
@@ -105,7 +106,7 @@ PressureIndependMultiYield::PressureIndependMultiYield(int tag, const PressureIn
   committed_.shear_modulus = p.shear_modulus;
   committed_.bulk_modulus = p.bulk_modulus;
   trial_ = committed_;
-  tangent_ = elastic_matrix(p.shear_modulus, p.bulk_modulus);
+  tangent_ = plane_strain_elastic_matrix(p.bulk_modulus, p.shear_modulus);
 }
 
 // The surfaces of the reference state (OpenSees setUpSurfaces): sizes M_m and plastic moduli H_m from the
@@ -203,16 +204,8 @@ std::unique_ptr<NDMaterial> PressureIndependMultiYield::copy_for(PlaneType plane
   return copy;
 }
 
-Matrix3 PressureIndependMultiYield::elastic_matrix(double G, double K) const {
-  Matrix3 D = Matrix3::Zero();
-  D(0, 0) = D(1, 1) = K + 4.0 * G / 3.0;
-  D(0, 1) = D(1, 0) = K - 2.0 * G / 3.0;
-  D(2, 2) = G;
-  return D;
-}
-
 Matrix3 PressureIndependMultiYield::initial_tangent() const {
-  return elastic_matrix(trial_.shear_modulus, trial_.bulk_modulus);
+  return plane_strain_elastic_matrix(trial_.bulk_modulus, trial_.shear_modulus);
 }
 
 // --- the switch to plasticity (OpenSees elast2Plast, paramScaling, initSurfaceUpdate) -----------------
@@ -286,11 +279,8 @@ void PressureIndependMultiYield::centre_on_stress(State& s) {
 // --- the stress update ------------------------------------------------------------------------------
 
 void PressureIndependMultiYield::set_trial_strain(const Vector3& strain) {
+  if (stage_ == 1 && !committed_.plastic_started) start_plastic(committed_);  // OpenSees does it to its committed state
   trial_ = committed_;
-  if (stage_ == 1 && !committed_.plastic_started) {  // OpenSees does this to its committed state
-    start_plastic(committed_);
-    trial_ = committed_;
-  }
   trial_.strain = strain;
   const Vector6 de = strain_tensor(strain - committed_.strain);
   if (stage_ != 1) {
@@ -420,7 +410,7 @@ void PressureIndependMultiYield::move_active_surface(const Vector6& dev) {
 // OpenSees' tangent: elastic, less 6 G^2 / ((2 G + H) M^2) (s - a) (s - a)^T on the active surface.
 void PressureIndependMultiYield::form_tangent() {
   const double G = trial_.shear_modulus;
-  tangent_ = elastic_matrix(G, trial_.bulk_modulus);
+  tangent_ = plane_strain_elastic_matrix(trial_.bulk_modulus, G);
   if (stage_ != 1 || trial_.active == 0) return;
   const Surface& a = trial_.surfaces[trial_.active];
   const Vector6 rel = deviator(trial_.stress) - a.center;

@@ -110,7 +110,6 @@ class PressureIndependMultiYield final : public NDMaterial, public ReducibleStre
   void scale_onto_surface(Vector6& dev, int k) const;      // deviatorScaling
   void move_active_surface(const Vector6& dev);            // updateActiveSurface
   bool crosses_next_surface(const Vector6& dev) const;
-  Matrix3 elastic_matrix(double G, double K) const;
   void form_tangent();
 
   PressureIndependMultiYieldParameters defined_;  ///< as given (after OpenSees' corrections)
