@@ -7,6 +7,8 @@
 #include <limits>
 #include <memory>
 
+#include "common/cpu_variants.hpp"
+
 namespace constitutive {
 namespace {
 
@@ -360,7 +362,7 @@ bool MohrCoulombReturnMap::admits(const PlaneStrainStress& trial) const {
   return inside(principal_extremes(trial), d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension);
 }
 
-MohrCoulombUpdate MohrCoulombReturnMap::apply_plastic(const PlaneStrainStress& trial) const {
+CPU_VARIANTS MohrCoulombUpdate MohrCoulombReturnMap::apply_plastic(const PlaneStrainStress& trial) const {
   const Data& d = *data_;
   return plastic_return(trial, decompose(trial), d.elasticity, d.planes, d.solves.data());
 }

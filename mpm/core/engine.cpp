@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/cpu_variants.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
 #include "mpm/core/boundary_rules.hpp"
@@ -403,9 +404,9 @@ void Engine::step() {
 #pragma omp parallel num_threads(threads_)
   {
     if (gimp)
-      run_step<GimpShape>();
+      run_gimp_step();
     else
-      run_step<LinearShape>();
+      run_linear_step();
   }
   throw_first_error();
   std::swap(cur_, nxt_);
@@ -445,6 +446,10 @@ void Engine::run_step() {
       break;
   }
 }
+
+// The step for each cell type, in a baseline and an AVX2 build (common/cpu_variants.hpp).
+CPU_VARIANTS void Engine::run_gimp_step() { run_step<GimpShape>(); }
+CPU_VARIANTS void Engine::run_linear_step() { run_step<LinearShape>(); }
 
 template <class F>
 void Engine::for_each_chunk(F&& f) {

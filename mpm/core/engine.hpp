@@ -90,6 +90,8 @@ class Engine {
   // --- the phases of a step (inside one parallel region; each waits for the one before) ---
   template <class Shape>
   void run_step();
+  void run_gimp_step();    ///< run_step<GimpShape>, compiled for the baseline and for AVX2 (engine.cpp)
+  void run_linear_step();  ///< run_step<LinearShape>, alike
   template <class Shape>
   void p2g(GridFields fields);  ///< particles to the chunks' bands
   void nodal_velocity(GridFields summed);  ///< sum the bands, nodal velocity = momentum / mass
