@@ -10,6 +10,7 @@
 
 #include "common/input_error.hpp"
 #include "common/printable_text.hpp"
+#include "mpm/core/energy_audit.hpp"
 #include "mpm/core/simulation.hpp"
 #include "mpm/io/deck_reader.hpp"
 #include "mpm/io/particle_table.hpp"
@@ -25,27 +26,57 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
   mpm::io::ResultsWriter results(deck);
   mpm::io::ProgressLine progress(deck.first_step, deck.analysis.nsteps);
   const long long nsteps = deck.analysis.nsteps, every = deck.output.output_steps;
+  // With analysis.locate_particles false, particles that leave the grid are removed (CB-Geo's rule):
+  // said when it first happens and counted at the end, never silently.
+  const std::size_t particles_at_start = sim.particle_count();
+  bool removal_said = false;
+  const auto say_removed = [&](const char* first_or_all) {
+    std::fprintf(stderr, "mpm: warning: %s%zu of %zu particles left the grid and were removed by t = %.6g s "
+                 "(analysis.locate_particles is false)\n", first_or_all, particles_at_start - sim.particle_count(),
+                 particles_at_start, sim.time());
+  };
+  if (sim.courant_number() > 1.0)
+    std::fprintf(stderr, "mpm: warning: analysis.dt = %.6g s is above the elastic limit h / c_p = %.6g s (Courant number "
+                 "%.3g): the explicit step is unstable there; use analysis.cfl (0.5 or less) or a smaller dt\n",
+                 sim.dt(), sim.dt() / sim.courant_number(), sim.courant_number());
+  mpm::core::EnergyAudit energy(deck);
+  const auto say = [&](const std::string& warning) {
+    if (warning.empty()) return;
+    progress.finish();
+    std::fprintf(stderr, "mpm: warning: %s\n", warning.c_str());
+  };
   try {
-    results.write_start(sim.time(), sim.snapshot());
+    const auto start = sim.snapshot();
+    results.write_start(sim.time(), start);
+    energy.check(sim.time(), start);
     while (sim.step_index() < nsteps) {
       const long long step = sim.step_index();
       sim.step();
-      if (step % every == 0)
-        results.write_output(step, sim.time(), sim.dt(), sim.snapshot(),
+      if (step % every == 0) {
+        const auto state = sim.snapshot();
+        results.write_output(step, sim.time(), sim.dt(), state,
                              deck.output.writes_particles(step) ? sim.affine_snapshot() : std::vector<std::array<double, 4>>{});
+        say(energy.check(sim.time(), state));
+      }
+      if (!removal_said && sim.particle_count() < particles_at_start) {
+        progress.finish();
+        say_removed("");
+        removal_said = true;
+      }
       progress.update(step, sim.time(), sim.dt(), sim.particle_count());
     }
   } catch (const common::NumericalError& e) {
     progress.finish();
     // The engine keeps the state of the last completed step (loop step step_index() - 1).
     const long long last = sim.step_index() - 1;
-    std::string saved = "no step completed, nothing written";
+    std::string saved = "no step completed (only the initial outputs are written)";
     if (last >= deck.first_step) saved = "last good state (step " + std::to_string(last) + ") written to " +
                                          results.write_state(last, sim.time(), sim.snapshot(), sim.affine_snapshot()).string();
     std::fprintf(stderr, "mpm: %s; %s\n", common::printable(e.what()).c_str(), saved.c_str());
     return 3;
   }
   progress.finish();
+  if (removal_said) say_removed("in all, ");
   if (sim.step_index() > deck.first_step && (sim.step_index() - 1) % every != 0)
     results.write_series_row(sim.step_index() - 1, sim.time(), sim.dt(), sim.snapshot());
   return 0;

@@ -32,7 +32,10 @@ Options that are not the driver's own (below) go to fem2mpm unchanged (bridge/RE
 --phi, --cohesion, --scheme, --cfl, ...); --model, --disp, --vel, --stress, --loads, --time, --row and --out are
 set by the driver. Everything after `--` goes to the script. Errors: one line on stderr; exit 2 for bad
 input (a missing model, an option without its value, a script that does not write the contracted files,
-a transfer time the FEM did not record), 1 when a stage fails otherwise.
+a transfer time the FEM did not record), 3 when fem2mpm or mpm stops on a numerical failure (mpm's
+runaway or energy-growth checks), 1 when a stage fails otherwise. The warnings of fem2mpm and mpm (units
+that look wrong, a time step above the stability limit, particles removed) are repeated on stderr and
+listed in summary.md.
 
 Example (scripts/examples/slope_on_foundation.tcl):
     scripts/hybrid_run.py scripts/examples/slope_on_foundation.tcl --transfer 0.5 --duration 4 \\
@@ -232,8 +235,16 @@ def figures(out, fem_dir, t_transfer, rows, states, spacing):
     return paths
 
 
+def repeat_warnings(logfile):
+    """A stage's warnings (pipeline.log_warnings), repeated on stderr; returns them."""
+    found = pipeline.log_warnings(logfile)
+    for w in found:
+        print("%s: %s" % (PROG, w), file=sys.stderr, flush=True)
+    return found
+
+
 def write_summary(out, args, command, forward, script_args, walls, rows, direction, report, deck, n_nodes, n_elems,
-                  fem_end, paths):
+                  fem_end, paths, warnings):
     end = rows[-1]
     lines = ["# hybrid_run: %s" % os.path.basename(args.model), "",
              "`%s`" % " ".join(command), "",
@@ -259,6 +270,8 @@ def write_summary(out, args, command, forward, script_args, walls, rows, directi
               "| kinetic energy at T -> end (largest) | %.4g -> %.4g kJ/m (%.4g) |"
               % (rows[0]["kinetic_energy"] / 1e3, end["kinetic_energy"] / 1e3, max(r["kinetic_energy"] for r in rows) / 1e3),
               "| largest speed at the end | %.3g m/s |" % end["max_speed"], ""]
+    if warnings:
+        lines += ["## Warnings", ""] + ["- `%s`" % w for w in warnings] + [""]
     if end["max_speed"] > 0.05:
         lines += ["The mass is still moving at the end (largest speed %.3g m/s): run longer (--duration) for the "
                   "final runout." % end["max_speed"], ""]
@@ -300,6 +313,7 @@ def main(argv=None):
     pipeline.remove_outputs(out, OUTPUTS)
     command = [PROG] + argv
     walls = {}
+    warnings = []
     stage = "FEM"
     try:
         print("%s: FEM: fem_tcl %s %s %s" % (PROG, args.model, fem_dir, " ".join(script_args)), flush=True)
@@ -313,6 +327,7 @@ def main(argv=None):
         print("%s: transfer at t = %g s: fem2mpm %s" % (PROG, args.transfer, " ".join(forward)), flush=True)
         walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, args.transfer,
                                                 list(forward) + ["--duration", repr(args.duration)])
+        warnings += repeat_warnings(os.path.join(mpm_dir, "fem2mpm.log"))
         if not option_given(forward, "--output-steps"):
             n_out = max(1, int(round(args.duration / (args.output_every or args.duration / 40.0))))
 
@@ -329,7 +344,10 @@ def main(argv=None):
             deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), lambda d: None)
         stage = "MPM"
         print("%s: MPM: %g s, %d steps" % (PROG, args.duration, deck["analysis"]["nsteps"]), flush=True)
-        walls["mpm"] = pipeline.run_mpm(bins, mpm_dir, args.threads)
+        try:
+            walls["mpm"] = pipeline.run_mpm(bins, mpm_dir, args.threads)
+        finally:
+            warnings += repeat_warnings(os.path.join(mpm_dir, "mpm.log"))
         stage = "post-processing"
         results = pipeline.results_dir(mpm_dir)
         rows, states, direction = runout_series(results, args.transfer, args.moved)
@@ -341,10 +359,10 @@ def main(argv=None):
         spacing = float(np.sqrt(np.median(states["T"]["volume"])))
         paths = figures(out, fem_dir, args.transfer, rows, states, spacing)
         write_summary(out, args, command, forward, script_args, walls, rows, direction, report, deck, len(xy),
-                      len(elems), fem_end, paths)
+                      len(elems), fem_end, paths, warnings)
     except pipeline.PipelineError as e:
         print("%s: error: %s: %s" % (PROG, stage, e), file=sys.stderr)
-        return 2 if e.bad_input else 1
+        return e.exit_code()
     front = ("front x = %.4g m" % rows[-1]["front_x"]) if np.isfinite(rows[-1]["front_x"]) else \
         "no moving front (no travel above %g m)" % args.moved
     print("%s: done: runout %.3g m, %s, %.0f %% of the mass moving at t = %g s; %s"

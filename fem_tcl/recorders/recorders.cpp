@@ -61,12 +61,16 @@ void TextRecorder::flush() {
 }
 
 NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<int> nodes,
-                           std::vector<int> dofs, NodeResponse response)
+                           std::vector<int> dofs, NodeResponse response, bool all_nodes)
     : TextRecorder(std::move(options)), domain_(domain), nodes_(std::move(nodes)), dofs_(std::move(dofs)),
-      response_(response) {}
+      response_(response), all_nodes_(all_nodes) {}
 
 void NodeRecorder::collect(std::vector<double>& row) {
   if (dofs_.empty()) return;
+  if (all_nodes_) {  // the domain's nodes at the first record, in tag order, as OpenSees
+    all_nodes_ = false;
+    for (const auto& [tag, n] : domain_.nodes()) nodes_.push_back(tag);
+  }
   if (response_ == NodeResponse::Reaction) domain_.compute_reactions();
   for (int tag : nodes_) {
     const domain::Node* n = domain_.find_node(tag);
@@ -129,6 +133,7 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
   RecorderOptions opt;
   std::vector<int> tags, dofs;
   bool have_dof = false, have_file = false;
+  bool selected = false;  // a -node/-nodeRange/-ele/-eleRange/-region option was given (OpenSees: else all)
   std::vector<std::string> response;
   while (!args.empty()) {
     if (args.flag("-file")) { opt.path = args.word("-file name"); have_file = true; }
@@ -141,13 +146,16 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
       if (opt.precision < 1 || opt.precision > 17) args.fail("expected 1 <= -precision <= 17");
     } else if (args.flag("-closeOnWrite")) opt.close_on_write = true;
     else if (is_node && args.flag("-node")) {
+      selected = true;
       auto t = read_integers(args);
       if (t.empty()) args.fail("missing node tags after -node");
       tags.insert(tags.end(), t.begin(), t.end());
     } else if (is_node && args.flag("-nodeRange")) {
+      selected = true;
       const int a = args.integer("-nodeRange start"), b = args.integer("-nodeRange end");
       for (const auto& [tag, n] : domain.nodes()) if (tag >= a && tag <= b) tags.push_back(tag);
     } else if (!is_mesh && args.flag("-region")) {  // OpenSees: the region's nodes / elements, in its order
+      selected = true;
       const int r = args.integer("-region tag");
       const domain::MeshRegion* region = domain.find_region(r);
       if (region == nullptr) args.fail("region " + std::to_string(r) + " does not exist");
@@ -160,10 +168,17 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
         dofs.push_back(d - 1);
       }
     } else if (!is_node && !is_mesh && args.flag("-ele")) {
+      selected = true;
+      if (args.peek() == "all") {  // OpenSees: every element of the domain
+        args.word("all");
+        for (const auto& [tag, e] : domain.elements()) tags.push_back(tag);
+        continue;
+      }
       auto t = read_integers(args);
-      if (t.empty()) args.fail("missing element tags after -ele");
+      if (t.empty()) args.fail("missing element tags after -ele (tags or all)");
       tags.insert(tags.end(), t.begin(), t.end());
     } else if (!is_node && !is_mesh && args.flag("-eleRange")) {
+      selected = true;
       const int a = args.integer("-eleRange start"), b = args.integer("-eleRange end");
       for (const auto& [tag, e] : domain.elements()) if (tag >= a && tag <= b) tags.push_back(tag);
     } else if (is_mesh) {
@@ -178,10 +193,14 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
   if (!have_file) args.fail("missing -file name (only file output is supported)");
   if (is_mesh) return std::make_unique<MeshQualityRecorder>(opt, domain);
   if (response.empty()) args.fail("missing response (e.g. disp, reaction, stress)");
+  // Without a selection OpenSees records every node (at the first record: NodeRecorder::initialize) or
+  // every element (those defined now, here).
+  if (!is_node && !selected)
+    for (const auto& [tag, e] : domain.elements()) tags.push_back(tag);
   // With no element selected the response words are never checked: "-time abc 1 stresses" would
   // record an empty file.
   if (!is_node && tags.empty())
-    args.fail("no elements selected (give -ele tags or -eleRange a b with existing elements), so the response '" +
+    args.fail("no elements selected (give -ele tags, -ele all or -eleRange a b with existing elements), so the response '" +
               common::printable(response[0]) + "' cannot be checked and nothing would be recorded");
   if (is_node) {
     NodeResponse r{};
@@ -203,7 +222,7 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
       std::cerr << "WARNING recorder Node -file " << opt.path
                 << ": no -dof given, so nothing will be written (as OpenSees); add e.g. -dof 1 2\n";
     }
-    return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r);
+    return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r, !selected);
   }
   std::vector<std::pair<int, std::size_t>> elements;
   for (int t : tags) {

@@ -49,8 +49,9 @@ enum class NodeResponse { Disp, Vel, Accel, IncrDisp, Reaction, Unbalance };
 
 class NodeRecorder final : public TextRecorder {
  public:
+  /// `all_nodes`: no node was selected, so (as OpenSees) every node of the domain at the first record.
   NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<int> nodes, std::vector<int> dofs,
-               NodeResponse response);
+               NodeResponse response, bool all_nodes = false);
 
  protected:
   /// Each node looked up by tag: a node removed since (`remove node`) writes zeros in its columns.
@@ -61,6 +62,7 @@ class NodeRecorder final : public TextRecorder {
   std::vector<int> nodes_;
   std::vector<int> dofs_;  ///< 0-based
   NodeResponse response_;
+  bool all_nodes_;
 };
 
 class ElementRecorder final : public TextRecorder {

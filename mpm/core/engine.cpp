@@ -100,6 +100,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     dt_ = (an.dt > 0) ? std::min(an.dt, auto_dt) : auto_dt;
   }
   if (!(dt_ > 0) || !std::isfinite(dt_)) throw common::InputError("analysis.dt", "expected a time step > 0");
+  courant_number_ = dt_ * max_wave_speed / std::min(grid_.hx, grid_.hy);
 
   // Small-mass cutoff (on bilinear cells, where particles read unweighted gradients of the updated grid
   // velocity: USL's strain increment, APIC's C_p): a fraction of a full node of the lightest material.
@@ -724,9 +725,9 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;
     nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
     const double speed = std::sqrt(vx * vx + vy * vy);
-    if (!std::isfinite(speed) || !std::isfinite(x) || !std::isfinite(y)) {
+    if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
       report(c, k, ProblemKind::VelocityNotFinite, cur_.id[p], vx, vy);
-    } else if (speed * dt_ > h) {
+    } else if (!(speed * dt_ <= h)) {  // an overflowing speed too
       report(c, k, ProblemKind::RunawayVelocity, cur_.id[p], speed, h / dt_);
     }
     // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:

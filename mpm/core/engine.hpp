@@ -78,6 +78,8 @@ class Engine {
   void step();
   long long step_index() const { return step_index_; }
   double dt() const { return dt_; }
+  /// dt c_p / h of the stiffest material on the smaller cell side (the elastic Courant number).
+  double courant_number() const { return courant_number_; }
   double time() const { return static_cast<double>(step_index_) * dt_; }
   std::size_t particle_count() const { return order_.size(); }
   std::vector<io::ParticleRecord> snapshot() const;
@@ -212,6 +214,7 @@ class Engine {
   io::Scheme scheme_ = io::Scheme::USF;
   VelocityTransfer transfer_;  ///< FLIP, PIC, blend or APIC (velocity_transfer.hpp)
   bool locate_ = true;
+  double courant_number_ = 0;
   double damping_ = 0.0;
   BodyForce body_force_;   ///< gravity and the shaken base's inertial force (body_force.hpp)
   ExternalLoads loads_;    ///< concentrated nodal forces and particle tractions (external_loads.hpp)

@@ -13,6 +13,7 @@ void Simulation::step() { engine_->step(); }
 long long Simulation::step_index() const { return engine_->step_index(); }
 double Simulation::time() const { return engine_->time(); }
 double Simulation::dt() const { return engine_->dt(); }
+double Simulation::courant_number() const { return engine_->courant_number(); }
 std::size_t Simulation::particle_count() const { return engine_->particle_count(); }
 std::vector<io::ParticleRecord> Simulation::snapshot() const { return engine_->snapshot(); }
 std::vector<std::array<double, 4>> Simulation::affine_snapshot() const { return engine_->affine_snapshot(); }

@@ -66,6 +66,8 @@ class Simulation {
   /// t = (s + 1) dt, as in a fresh CB-Geo run), so it is the same after a resume.
   double time() const;
   double dt() const;
+  /// dt c_p / h (c_p of the stiffest material, h the smaller cell side): above 1 the step is unstable.
+  double courant_number() const;
   std::size_t particle_count() const;
   /// Full particle state in CB-Geo's record form, sorted by particle id (exact doubles).
   std::vector<io::ParticleRecord> snapshot() const;

@@ -150,6 +150,7 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
   // CB-Geo's current key is mpm_scheme; older decks call it stress_update. Never a silent default.
   std::string scheme_key = a.has("mpm_scheme") ? "mpm_scheme" : "stress_update";
   if (a.has("mpm_scheme") && a.has("stress_update")) a.fail("stress_update", "give mpm_scheme or stress_update, not both");
+  if (!a.has(scheme_key)) a.fail("mpm_scheme", "missing (required: usf, usl or musl; older decks call it stress_update)");
   const std::string scheme = a.string(scheme_key);
   if (scheme == "usf") an.scheme = Scheme::USF;
   else if (scheme == "usl") an.scheme = Scheme::USL;
@@ -445,10 +446,11 @@ void read_loads(StrictObject& root, Deck& deck, const Lattice& lattice, const En
   const json* loads = root.optional("external_loading_conditions");
   if (loads == nullptr) return;
   StrictObject l(*loads, root.file(), "external_loading_conditions");
-  const json& g = l.required("gravity");
-  if (!g.is_array() || g.size() != 2 || !g[0].is_number() || !g[1].is_number())
-    l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
-  deck.analysis.gravity = Eigen::Vector2d(g[0].get<double>(), g[1].get<double>());
+  if (const json* g = l.optional("gravity")) {  // absent: no gravity, as without the block
+    if (!g->is_array() || g->size() != 2 || !(*g)[0].is_number() || !(*g)[1].is_number())
+      l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
+    deck.analysis.gravity = Eigen::Vector2d((*g)[0].get<double>(), (*g)[1].get<double>());
+  }
   if (l.has("base_acceleration")) {
     StrictObject b = l.object("base_acceleration");
     deck.base_acceleration = read_base_acceleration(b, math_functions);
@@ -662,6 +664,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     for (std::size_t k = 0; k < ms->size(); ++k) {
       StrictObject s((*ms)[k], shown, "material_sets[" + std::to_string(k) + "]");
       const long long mid = s.integer("material_id");
+      s.accept_only("phase_id", {0}, "one phase (the solid) is modelled");
       if (!find_material(deck.materials, mid)) s.fail("material_id", "material " + std::to_string(mid) + " is not defined in materials");
       const long long pset = s.integer("pset_id");
       const std::vector<long long>* members = nullptr;

@@ -13,19 +13,29 @@ const std::vector<std::string>& transfer_names() {
 
 const std::string& transfer_name(Transfer t) { return transfer_names()[static_cast<std::size_t>(t)]; }
 
+namespace {
+Transfer named_transfer(StrictObject& a, const std::string& key, const std::string& name) {
+  const auto& names = transfer_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) a.fail(key, "unknown transfer \"" + name + "\" (expected flip, pic or apic)");
+  return static_cast<Transfer>(it - names.begin());
+}
+}  // namespace
+
 void read_velocity_transfer(StrictObject& a, Analysis& an) {
-  const bool has_velocity_update = a.has("velocity_update");
-  const bool velocity_update = a.boolean_or("velocity_update", false);
-  an.transfer = velocity_update ? Transfer::PIC : Transfer::FLIP;
+  const nlohmann::json* update = a.optional("velocity_update");
+  const bool named = update != nullptr && update->is_string();  // newer CB-Geo decks: "flip", "pic", "apic"
+  const bool has_velocity_update = update != nullptr && !named;  // CB-Geo's boolean: true means PIC
+  const bool velocity_update = has_velocity_update && a.boolean("velocity_update");
+  an.transfer = named ? named_transfer(a, "velocity_update", update->get<std::string>())
+                      : (velocity_update ? Transfer::PIC : Transfer::FLIP);
   if (a.has("transfer")) {
-    const std::string name = a.string("transfer");
-    const auto& names = transfer_names();
-    const auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end())
-      a.fail("transfer", "unknown transfer \"" + name + "\" (expected flip, pic or apic)");
-    const auto chosen = static_cast<Transfer>(it - names.begin());
+    const auto chosen = named_transfer(a, "transfer", a.string("transfer"));
+    if (named && chosen != an.transfer)
+      a.fail("transfer", "\"" + transfer_name(chosen) + "\" contradicts velocity_update \"" +
+                             transfer_name(an.transfer) + "\"; give one of the two keys");
     if (has_velocity_update && (chosen == Transfer::PIC) != velocity_update)
-      a.fail("transfer", "\"" + name + "\" contradicts velocity_update " + (velocity_update ? "true" : "false") +
+      a.fail("transfer", "\"" + transfer_name(chosen) + "\" contradicts velocity_update " + (velocity_update ? "true" : "false") +
                              " (true means pic, false flip or apic); give one of the two keys");
     an.transfer = chosen;
   }

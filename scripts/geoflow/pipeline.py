@@ -24,9 +24,14 @@ class PipelineError(RuntimeError):
     """A stage failed or broke the contract; str() is the one-line message. bad_input: the input is at fault
     (a broken contract, or a program that exited with 2, its code for bad input)."""
 
-    def __init__(self, message, bad_input=False):
+    def __init__(self, message, bad_input=False, numerical=False):
         super().__init__(message)
         self.bad_input = bad_input
+        self.numerical = numerical  # a program exited with 3, its code for a numerical failure
+
+    def exit_code(self):
+        """The driver's exit status for this failure: 2 bad input, 3 numerical failure, 1 otherwise."""
+        return 2 if self.bad_input else 3 if self.numerical else 1
 
 
 def find_bins(bin_dir, repo):
@@ -51,8 +56,16 @@ def run_cmd(cmd, cwd=None, logfile=None):
         last = [ln for ln in tail.splitlines() if ln.strip()]
         raise PipelineError("%s failed (exit %d): %s%s" % (os.path.basename(cmd[0]), r.returncode, last[-1] if last else "",
                                                           " (log: %s)" % logfile if logfile else ""),
-                            bad_input=r.returncode == 2)
+                            bad_input=r.returncode == 2, numerical=r.returncode == 3)
     return wall
+
+
+def log_warnings(logfile):
+    """The warning lines a program wrote to its log ("prog: warning: ..."), in order; [] without a log."""
+    if not logfile or not os.path.exists(logfile):
+        return []
+    with open(logfile, errors="replace") as f:
+        return [ln.strip() for ln in f if "warning:" in ln]
 
 
 def run_fem_script(bins, script, fem_dir, script_args=(), logfile=None):

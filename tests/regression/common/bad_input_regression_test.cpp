@@ -272,9 +272,12 @@ TEST(BadInputRegression, FemTclRejectsNonFiniteNumbers) {
 
 TEST(BadInputRegression, FemTclElementRecorderWithoutElementsIsAnError) {
   const auto dir = scratch("recorder_abc");
-  const auto r = fem_tcl(dir, std::string(kModel) + "recorder Element -file e.out -time abc 1 stresses\n");
-  expect_one_line_error(r, 2, "recorder Element: no elements selected (give -ele tags or -eleRange a b with existing elements), "
-                              "so the response 'abc' cannot be checked");
+  // No selection records every element (OpenSees), so the response is checked against them.
+  auto r = fem_tcl(dir, std::string(kModel) + "recorder Element -file e.out -time abc 1 stresses\n");
+  expect_one_line_error(r, 2, "has no response 'abc 1 stresses'");
+  r = fem_tcl(dir, std::string(kModel) + "recorder Element -file e.out -time -eleRange 900 901 stresses\n");
+  expect_one_line_error(r, 2, "recorder Element: no elements selected (give -ele tags, -ele all or -eleRange a b with existing "
+                              "elements), so the response 'stresses' cannot be checked");
 }
 
 TEST(BadInputRegression, FemTclRecorderOnAFullDeviceFailsWithExitStatus1) {

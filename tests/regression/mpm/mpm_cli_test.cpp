@@ -243,10 +243,82 @@ TEST(MpmNumericalFailure, RunawayVelocityIsNamedWithStepAndParticle) {
   save(dir / "mpm.json", deck);
   const auto r = run_mpm(dir, "mpm.json", "--threads 1");
   EXPECT_EQ(r.exit_code, 3);
-  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_EQ(line_count(r.err), 2u) << r.err;  // the Courant warning, then the failure
+  EXPECT_NE(r.err.find("warning: analysis.dt = 0.05 s is above the elastic limit h / c_p = 0.00883883 s"),
+            std::string::npos) << r.err;
   EXPECT_NE(r.err.find("step "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("particle "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("written to "), std::string::npos) << r.err;
+}
+
+TEST(MpmNumericalFailure, EnergyGrowingWithoutExternalWorkStopsTheRun) {
+  // The block deck (USF, FLIP, bilinear cells) at dt = 0.008 s, Courant number 0.9: below the elastic
+  // limit, but the bouncing block gains energy from the step (measured: +13.6 % by t = 1.77 s, +26 % by
+  // 1.93 s; at dt = 0.0044 s, CFL 0.5, it keeps its energy over 3.5 s). Nothing does work on it, so the
+  // energy audit (mpm/core/energy_audit.hpp) stops the run with exit 3 after a warning.
+  const fs::path dir = copy_case("elastic_block_drop", "gains_energy");
+  json deck = load(dir / "mpm.json");
+  deck["analysis"]["dt"] = 0.008;
+  deck["analysis"]["nsteps"] = 500;
+  deck["post_processing"]["output_steps"] = 20;
+  save(dir / "mpm.json", deck);
+  const auto r = run_mpm(dir, "mpm.json", "--threads 1");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(line_count(r.err), 2u) << r.err;
+  EXPECT_NE(r.err.find("warning: the mechanical energy (kinetic + gravitational + elastic) grew by 1"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("the explicit step is unstable here"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("written to "), std::string::npos) << r.err;
+}
+
+TEST(MpmWarnings, ParticlesRemovedOffTheGridAreCounted) {
+  // locate_particles false and no base: the block falls out of the grid and its particles are removed,
+  // which is said when it starts and counted at the end (never silently; the run itself succeeds).
+  const fs::path dir = copy_case("elastic_block_drop", "removed");
+  json deck = load(dir / "mpm.json");
+  deck["analysis"]["locate_particles"] = false;
+  deck["analysis"]["nsteps"] = 2001;
+  deck["mesh"]["boundary_conditions"]["velocity_constraints"] = json::array();
+  save(dir / "mpm.json", deck);
+  const auto r = run_mpm(dir, "mpm.json", "--threads 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(line_count(r.err), 2u) << r.err;
+  EXPECT_NE(r.err.find("particles left the grid and were removed by t = "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("warning: in all, "), std::string::npos) << r.err;
+}
+
+TEST(MpmDeck, VelocityUpdateNamesTheTransferAsNewerCbGeoDecksDo) {
+  // Newer CB-Geo decks write velocity_update "flip" / "pic" / "apic": the same runs as the boolean
+  // (true = pic) or `transfer`; a contradiction with `transfer` is an error; an empty loading block is
+  // no gravity.
+  const auto run_with = [](const std::string& name, const json& update, const json* transfer = nullptr) {
+    const fs::path dir = copy_case("elastic_block_drop", "update_" + name);
+    json deck = load(dir / "mpm.json");
+    deck["analysis"]["velocity_update"] = update;
+    deck["analysis"]["nsteps"] = 251;
+    if (transfer) deck["analysis"]["transfer"] = *transfer;
+    save(dir / "mpm.json", deck);
+    return std::make_pair(dir, run_mpm(dir, "mpm.json", "--threads 1"));
+  };
+  const auto [bool_dir, bool_run] = run_with("bool", true);
+  const auto [named_dir, named_run] = run_with("named", "pic");
+  ASSERT_EQ(bool_run.exit_code, 0) << bool_run.err;
+  ASSERT_EQ(named_run.exit_code, 0) << named_run.err;
+  expect_identical_tables(bool_dir / "results/block_drop/particles250.h5", named_dir / "results/block_drop/particles250.h5");
+  const json flip = "flip";
+  const auto [bad_dir, bad_run] = run_with("contradiction", "pic", &flip);
+  EXPECT_EQ(bad_run.exit_code, 2);
+  EXPECT_NE(bad_run.err.find("analysis.transfer: \"flip\" contradicts velocity_update \"pic\""), std::string::npos)
+      << bad_run.err;
+
+  const fs::path dir = copy_case("elastic_block_drop", "no_gravity");
+  json deck = load(dir / "mpm.json");
+  deck["external_loading_conditions"] = json::object();
+  deck["analysis"]["nsteps"] = 251;
+  save(dir / "mpm.json", deck);
+  const auto r = run_mpm(dir, "mpm.json", "--threads 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& p : mpm::io::read_particle_table(dir / "results/block_drop/particles250.h5")) EXPECT_EQ(p.velocity_y, 0.0);
 }
 
 TEST(MpmCheckerboard, IndexInSeriesDropsWithEitherRemedy) {

@@ -439,6 +439,38 @@ TEST(TclCommands, RecorderTagsAndRemoval) {
   EXPECT_EQ(test_support::read_numeric_table(b).size(), 1u);
 }
 
+TEST(TclCommands, RecordersWithoutASelectionRecordEveryNodeAndElement) {
+  // OpenSees: a Node recorder without -node/-nodeRange/-region records every node of the domain at its
+  // first row (NodeRecorder::initialize), an Element recorder without -ele every element (and -ele all).
+  test_support::ScratchDir dir("fem_tcl_recall");
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  const std::string nodes = (dir.path() / "nodes.out").string(), all = (dir.path() / "all.out").string(),
+                    listed = (dir.path() / "listed.out").string(), some = (dir.path() / "some.out").string();
+  std::string message;
+  ASSERT_TRUE(interp.eval_script("recorder Node -file " + nodes + " -time -dof 1 2 disp\n"
+                                 "recorder Element -file " + all + " stress\n"
+                                 "recorder Element -file " + listed + " -ele all stress\n"
+                                 "recorder Element -file " + some + " -ele 2 stress\n"
+                                 "node 7 3 0; fix 7 1 1\n"  // defined after the recorder, before its first row
+                                 "timeSeries Linear 1\npattern Plain 1 1 { load 6 0.0 -1.0 }\n"
+                                 "constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5\n"
+                                 "algorithm Newton; integrator LoadControl 1.0; analysis Static; analyze 1\n",
+                                 "test", message))
+      << message;
+  interp.context().domain.flush_recorders();
+  const auto node_rows = test_support::read_numeric_table(nodes);
+  ASSERT_EQ(node_rows.size(), 1u);
+  EXPECT_EQ(node_rows[0].size(), 1u + 7u * 2u);  // time, then ux uy of nodes 1..7
+  EXPECT_NE(node_rows[0][1 + 2 * 5 + 1], 0.0);   // uy of node 6, loaded
+  const auto all_rows = test_support::read_numeric_table(all), some_rows = test_support::read_numeric_table(some);
+  ASSERT_EQ(all_rows.size(), 1u);
+  ASSERT_EQ(some_rows.size(), 1u);
+  EXPECT_EQ(all_rows[0].size(), 4u * 3u + 3u);  // quad: 4 points x 3 values, SSPquad: 3 values
+  EXPECT_EQ(test_support::read_numeric_table(listed), all_rows);
+  EXPECT_EQ(std::vector<double>(all_rows[0].end() - 3, all_rows[0].end()), some_rows[0]);
+}
+
 }  // namespace
 
 namespace {
