@@ -100,6 +100,16 @@ void LinearSolver::factor_lu() {
   }
 }
 
+void LinearSolver::mirror_upper_triangle() {
+  double* v = A_.valuePtr();
+  for (int col = 0; col < A_.outerSize(); ++col)
+    for (int k = A_.outerIndexPtr()[col]; k < A_.outerIndexPtr()[col + 1]; ++k)
+      if (A_.innerIndexPtr()[k] > col) {  // below the diagonal: its transpose's value, or 0 when that is absent
+        const int t = transpose_position_[static_cast<std::size_t>(k)];
+        v[k] = t < 0 ? 0.0 : v[t];
+      }
+}
+
 void LinearSolver::zero_values() { std::fill(A_.valuePtr(), A_.valuePtr() + A_.nonZeros(), 0.0); }
 
 void LinearSolver::factor() {
@@ -118,7 +128,17 @@ void LinearSolver::factor() {
     if (!use_cholesky_) factor_lu();
   } else {
     use_cholesky_ = true;
+    // OpenSees' SPD systems assemble the upper triangle only (ProfileSPDLinSOE, BandSPDLinSOE::addA: row
+    // <= column), so a non-symmetric tangent is solved as the symmetric matrix of its upper triangle:
+    // mirrored here into the lower one, which CHOLMOD reads. A symmetric matrix is left as assembled.
+    const bool symmetric = values_symmetric();
+    if (!symmetric) mirror_upper_triangle();
     if (!try_cholesky()) {
+      if (!symmetric)
+        throw common::NumericalError(
+            "the tangent is not symmetric (non-associated plasticity: psi != phi, or rho_bar != rho) and the "
+            "symmetric matrix of its upper triangle, which this SPD system solves as OpenSees does, is not positive "
+            "definite; use system UmfPack or BandGeneral");
       throw common::NumericalError(
           "the system matrix is singular or not positive definite (CHOLMOD); check supports and connectivity");
     }

@@ -43,6 +43,8 @@ class LinearSolver {
   struct Impl;
   bool values_symmetric() const;
   bool try_cholesky();
+  /// SPD systems: the lower triangle set to the transpose of the upper one (OpenSees assembles only that).
+  void mirror_upper_triangle();
   void factor_lu();
   SolverKind kind_;
   Eigen::SparseMatrix<double> A_;

@@ -113,6 +113,33 @@ TEST(LinearSolver, GeneralSymmetricIndefiniteAndUnsymmetricSystemsAreSolved) {
   EXPECT_THROW(spd.factor(), common::NumericalError);
 }
 
+TEST(LinearSolver, SpdSystemsSolveTheUpperTriangleAsOpenSees) {
+  // OpenSees' ProfileSPD / BandSPD assemble only the upper triangle (row <= column) of a non-symmetric
+  // tangent: U = [[4, 1], [-2, 3]] is solved as [[4, 1], [1, 3]].
+  Eigen::SparseMatrix<double> U(2, 2);
+  U.insert(0, 0) = 4.0; U.insert(0, 1) = 1.0; U.insert(1, 0) = -2.0; U.insert(1, 1) = 3.0;
+  LinearSolver spd(SolverKind::SymmetricPositiveDefinite);
+  spd.set_pattern(U);
+  spd.factor();
+  const Eigen::VectorXd b = (Eigen::VectorXd(2) << 1.0, -1.0).finished();
+  Eigen::VectorXd x;
+  spd.solve(b, x);
+  const Eigen::Matrix2d upper = (Eigen::Matrix2d() << 4.0, 1.0, 1.0, 3.0).finished();
+  EXPECT_LT((upper * x - b).norm(), 1e-14);
+  // and when that symmetric matrix is indefinite, the error says why and what to use instead
+  Eigen::SparseMatrix<double> N(2, 2);
+  N.insert(0, 0) = 1.0; N.insert(0, 1) = 3.0; N.insert(1, 0) = 0.0; N.insert(1, 1) = 1.0;
+  LinearSolver bad(SolverKind::SymmetricPositiveDefinite);
+  bad.set_pattern(N);
+  try {
+    bad.factor();
+    ADD_FAILURE() << "no error";
+  } catch (const common::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("the tangent is not symmetric"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("use system UmfPack or BandGeneral"), std::string::npos) << e.what();
+  }
+}
+
 TEST(LinearSolver, SystemNamesMapOntoTwoSolvers) {
   SolverKind kind{};
   for (const char* name : {"BandGeneral", "SparseGeneral", "UmfPack", "FullGeneral"}) {
