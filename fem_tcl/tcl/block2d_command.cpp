@@ -12,6 +12,7 @@
 #include <tcl.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "fem_tcl/elements/block2d.hpp"
@@ -59,6 +60,9 @@ elements::Block2dPoints parse_points(Context& ctx, common::CommandArgs& args, co
   return points;
 }
 
+/// The most nodes one block2D makes (a typo such as 100000 x 100000 fails at once instead of exhausting memory).
+constexpr long long kMaxBlockNodes = 20'000'000;
+
 }  // namespace
 
 std::string cmd_block2d(Context& ctx, common::CommandArgs& args) {
@@ -81,6 +85,20 @@ std::string cmd_block2d(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   if (num_x < 1 || num_y < 1) {
     args.fail("expected numX and numY >= 1, got " + std::to_string(num_x) + " and " + std::to_string(num_y));
+  }
+  // The block's size and last tags before anything is allocated: (numX + 1) (numY + 1) nodes from
+  // startNode, numX numY elements from startEle, all within Tcl's (and OpenSees') int tags.
+  const long long nodes = (static_cast<long long>(num_x) + 1) * (static_cast<long long>(num_y) + 1);
+  const long long elements = static_cast<long long>(num_x) * num_y;
+  if (nodes > kMaxBlockNodes) {
+    args.fail("a block of " + std::to_string(nodes) + " nodes is beyond fem_tcl's limit of " +
+              std::to_string(kMaxBlockNodes) + " per block (about 1 GB per million nodes in the analysis)");
+  }
+  constexpr long long kMaxTag = std::numeric_limits<int>::max();
+  if (start_node + nodes - 1 > kMaxTag || start_ele + elements - 1 > kMaxTag) {
+    args.fail("the block's tags would pass " + std::to_string(kMaxTag) + " (nodes " + std::to_string(start_node) + "-" +
+              std::to_string(start_node + nodes - 1) + ", elements " + std::to_string(start_ele) + "-" +
+              std::to_string(start_ele + elements - 1) + ")");
   }
   if (!elements::find_element_parser(type)) {
     std::string known;

@@ -177,6 +177,12 @@ TEST(Block2dCommand, ErrorsNameTheBlock) {
   EXPECT_NE(e.find("unknown element type 'tri31'"), std::string::npos) << e;
   e = error_of(interp, "block2D 0 2 1 1 quad \"1.0 PlaneStrain 1\"" + square);
   EXPECT_NE(e.find("numX and numY >= 1"), std::string::npos) << e;
+  // tags past the int range, and a block too large to build, fail before anything is allocated
+  e = error_of(interp, "block2D 2 2 2147483640 2147483646 quad \"1.0 PlaneStrain 1\"" + square);
+  EXPECT_NE(e.find("the block's tags would pass 2147483647 (nodes 2147483640-2147483648, elements 2147483646-2147483649)"),
+            std::string::npos) << e;
+  e = error_of(interp, "block2D 100000 100000 1 1 quad \"1.0 PlaneStrain 1\"" + square);
+  EXPECT_NE(e.find("a block of 10000200001 nodes is beyond fem_tcl's limit of 20000000 per block"), std::string::npos) << e;
   EXPECT_TRUE(interp.context().domain.nodes().empty());  // nothing created by the failed blocks
   // an element error names the block, the element and the element's own complaint
   e = error_of(interp, "block2D 2 2 1 1 quad \"1.0 PlaneStrain 7\"" + square);
