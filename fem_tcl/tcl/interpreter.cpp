@@ -2,10 +2,13 @@
 
 #include <tcl.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <iterator>
 #include <sstream>
+#include <vector>
 
 #include "common/input_error.hpp"
 #include "common/printable_text.hpp"
@@ -127,24 +130,57 @@ void Interpreter::set_arguments(const std::string& argv0, const std::vector<std:
 }
 
 namespace {
+/// The lines of a loop body a command sits in, from errorInfo's frames inside the file (innermost
+/// first): '("for" body line 3)' means the third line of the body, which starts on the loop's own line
+/// (Tcl's bodies open with the brace there). Summed from the outermost loop in, so an error in a meshing
+/// loop names its own line, not the loop's first. A frame of another kind (an if branch, a procedure,
+/// eval) ends the sum there: its body's first line is not known from the trace.
+int loop_body_offset(const std::string& trace, std::size_t file_frame) {
+  std::vector<int> body_lines;  // innermost first
+  std::size_t pos = 0;
+  while (pos < file_frame) {
+    const std::size_t end = std::min(trace.find('\n', pos), file_frame);
+    const std::string line = trace.substr(pos, end - pos);
+    pos = end + 1;
+    const std::size_t open = line.find_first_not_of(' ');
+    if (open == std::string::npos || line[open] != '(' || line.back() != ')') continue;  // not a frame
+    int n = 0;
+    bool loop = false;
+    for (const char* kind : {"(\"for\" body line ", "(\"foreach\" body line ", "(\"while\" body line "}) {
+      if (line.compare(open, std::strlen(kind), kind) == 0) {
+        n = std::atoi(line.c_str() + open + std::strlen(kind));
+        loop = n > 0;
+      }
+    }
+    if (loop) {
+      body_lines.push_back(n);
+    } else {
+      body_lines.clear();  // inside another kind of frame: only the loops outside it count
+    }
+  }
+  int offset = 0;
+  for (int n : body_lines) offset += n - 1;
+  return offset;
+}
+
 /// "file:line: message": the innermost file in errorInfo ('(file "x.tcl" line N)', e.g. inside `source`),
-/// else `name` and the -errorline of the evaluated script.
+/// else `name` and the -errorline of the evaluated script; the line is that of the failing command inside
+/// the loops around it (loop_body_offset).
 std::string error_message(Tcl_Interp* interp, const std::string& name) {
   std::string message = Tcl_GetStringResult(interp);
   const char* info = Tcl_GetVar(interp, "errorInfo", TCL_GLOBAL_ONLY);
-  if (info) {
-    const std::string trace(info);
-    const std::string marker = "(file \"";
-    const auto at = trace.find(marker);
-    if (at != std::string::npos) {
-      const auto name_end = trace.find("\" line ", at + marker.size());
-      if (name_end != std::string::npos) {
-        const auto line_start = name_end + 7;
-        const auto line_end = trace.find(')', line_start);
-        if (line_end != std::string::npos) {
-          return trace.substr(at + marker.size(), name_end - at - marker.size()) + ":" +
-                 trace.substr(line_start, line_end - line_start) + ": " + message;
-        }
+  const std::string trace = info ? info : "";
+  const std::string marker = "(file \"";
+  const auto at = trace.find(marker);
+  if (at != std::string::npos) {
+    const auto name_end = trace.find("\" line ", at + marker.size());
+    if (name_end != std::string::npos) {
+      const auto line_start = name_end + 7;
+      const auto line_end = trace.find(')', line_start);
+      if (line_end != std::string::npos) {
+        const int line = std::atoi(trace.substr(line_start, line_end - line_start).c_str()) + loop_body_offset(trace, at);
+        return trace.substr(at + marker.size(), name_end - at - marker.size()) + ":" + std::to_string(line) + ": " +
+               message;
       }
     }
   }
@@ -157,7 +193,7 @@ std::string error_message(Tcl_Interp* interp, const std::string& name) {
   if (Tcl_DictObjGet(interp, options, key, &line_obj) == TCL_OK && line_obj) Tcl_GetIntFromObj(interp, line_obj, &line);
   Tcl_DecrRefCount(key);
   Tcl_DecrRefCount(options);
-  return name + ":" + std::to_string(line) + ": " + message;
+  return name + ":" + std::to_string(line + loop_body_offset(trace, trace.size())) + ": " + message;
 }
 }  // namespace
 

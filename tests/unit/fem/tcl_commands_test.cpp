@@ -439,6 +439,29 @@ TEST(TclCommands, RecorderTagsAndRemoval) {
   EXPECT_EQ(test_support::read_numeric_table(b).size(), 1u);
 }
 
+TEST(TclCommands, AnErrorInsideLoopsNamesItsOwnLine) {
+  // Meshes are built in loops: the line named is the failing command's, not the outer loop's first
+  // (errorInfo's '("for" body line N)' frames summed), also through a procedure called in a loop.
+  Interpreter interp;
+  std::string message;
+  EXPECT_FALSE(interp.eval_script("model basic -ndm 2 -ndf 2\n"                         // 1
+                                  "for {set j 0} {$j < 2} {incr j} {\n"                 // 2
+                                  "  for {set i 0} {$i < 2} {incr i} {\n"               // 3
+                                  "    set n [expr {$i + 1}]\n"                         // 4
+                                  "    element quad 1 1 2 3 4 1.0 PlaneStrain 7\n"      // 5
+                                  "  }\n}\n",
+                                  "mesh.tcl", message));
+  EXPECT_EQ(message.rfind("mesh.tcl:5: element quad 1", 0), 0u) << message;
+  EXPECT_FALSE(interp.eval_script("proc fail {} {\n  error boom\n}\n"                  // 1-3
+                                  "foreach k {1 2} {\n"                                 // 4
+                                  "  set m $k\n"                                        // 5
+                                  "  if {$k == 2} {\n"                                  // 6
+                                  "    fail\n"                                          // 7
+                                  "  }\n}\n",
+                                  "calls.tcl", message));
+  EXPECT_EQ(message, "calls.tcl:7: boom");
+}
+
 TEST(TclCommands, RecordersWithoutASelectionRecordEveryNodeAndElement) {
   // OpenSees: a Node recorder without -node/-nodeRange/-region records every node of the domain at its
   // first row (NodeRecorder::initialize), an Element recorder without -ele every element (and -ele all).
