@@ -39,6 +39,13 @@ struct AnalysisStats {
   long factorizations = 0;
 };
 
+/// The result of `eigen` (Analysis::eigen_modes).
+struct EigenModes {
+  std::vector<double> eigenvalues;      ///< lambda = omega^2 (1/s^2), ascending
+  std::vector<int> node_tags;           ///< the nodes of the shapes, in tag order
+  std::vector<Eigen::VectorXd> shapes;  ///< per mode: ux, uy of each node; phi^T M phi = 1, 0 at fixed dofs
+};
+
 class Analysis final : public StepProblem {
  public:
   Analysis(domain::Domain& domain, AnalysisConfig config);
@@ -55,6 +62,10 @@ class Analysis final : public StepProblem {
   /// with a dt no smaller (Jd >= max_iter + 1) and loop for ever, the dt is halved (warning). Returns 0 or
   /// the negative code of analyze().
   int analyze_variable(int steps, double dt, double dt_min, double dt_max, int jd);
+  /// OpenSees' `eigen`: the n lowest modes of K phi = lambda M phi, K the current tangent and M the lumped
+  /// mass of the free equations (eigen_analysis.cpp). Throws common::NumericalError when K is singular
+  /// or fewer than n equations carry mass.
+  EigenModes eigen_modes(int n);
   const AnalysisStats& stats() const { return stats_; }
   const ConvergenceTest& test() const { return test_; }
   const AnalysisConfig& config() const { return config_; }

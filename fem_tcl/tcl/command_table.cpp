@@ -34,6 +34,8 @@ constexpr std::array kCommands{
     CommandEntry{"integrator", "integrator LoadControl dLambda <Jd minLambda maxLambda> | DisplacementControl node dof dU <numIter dUmin dUmax> | Newmark gamma beta | HHT alpha <gamma beta> | CentralDifference", 0, cmd_integrator},
     CommandEntry{"analysis", "analysis Static|Transient|VariableTransient", 0, cmd_analysis},
     CommandEntry{"analyze", "analyze numSteps <dt> <dtMin dtMax Jd>", 0, cmd_analyze},
+    CommandEntry{"eigen", "eigen <-genBandArpack|-symmBandLapack|-fullGenLapack> numModes", 1, cmd_eigen},
+    CommandEntry{"nodeEigenvector", "nodeEigenvector nodeTag mode <dof>", 2, cmd_node_eigenvector},
     CommandEntry{"strengthReduction", "strengthReduction -materials {tags} <-bracket Flo Fhi> <-tol dF> <-criterion displacement|convergence> <-displacementRatio r> <-displacementLimit d> <-steps n> <-maxCuts m> <-maxTrials k>", 0, cmd_strength_reduction},
     CommandEntry{"loadConst", "loadConst <-time t>", 0, cmd_load_const},
     CommandEntry{"setTime", "setTime t", 0, cmd_set_time},

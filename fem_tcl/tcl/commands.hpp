@@ -56,6 +56,8 @@ std::string cmd_algorithm(Context&, common::CommandArgs&);
 std::string cmd_integrator(Context&, common::CommandArgs&);
 std::string cmd_analysis(Context&, common::CommandArgs&);
 std::string cmd_analyze(Context&, common::CommandArgs&);
+std::string cmd_eigen(Context&, common::CommandArgs&);
+std::string cmd_node_eigenvector(Context&, common::CommandArgs&);
 std::string cmd_load_const(Context&, common::CommandArgs&);
 std::string cmd_strength_reduction(Context&, common::CommandArgs&);
 std::string cmd_set_time(Context&, common::CommandArgs&);

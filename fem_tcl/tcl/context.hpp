@@ -42,6 +42,7 @@ struct Context {
   AnalysisChain chain;
   std::unique_ptr<analysis::Analysis> analysis;  ///< rebuilt when the chain changes
   bool analysis_dirty = true;
+  analysis::EigenModes eigen;  ///< the last `eigen` (nodeEigenvector reads it)
   domain::LoadPattern* current_pattern = nullptr;  ///< inside `pattern Plain ... {body}`
   int failed_analyses = 0;  ///< `analyze` calls that returned < 0 (reported again at exit)
   /// The last command error and the exit status it maps to (2 input, 1 output, 3 numerical), so that

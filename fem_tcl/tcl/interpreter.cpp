@@ -26,6 +26,7 @@ void Context::wipe() {
   materials.clear();
   uniaxial_materials.clear();
   current_pattern = nullptr;
+  eigen = {};
 }
 
 void Context::wipe_analysis() {
