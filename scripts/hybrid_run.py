@@ -169,8 +169,18 @@ def runout_series(results, t_transfer, moved):
         r["front_x"] = float(direction * np.max(direction * r["x"][r["mov"]])) if np.any(r["mov"]) else float("nan")
         for k in ("dx_sum", "mov", "x"):
             del r[k]
+    # a mass moving the other way too (a dam or ridge failing on both faces): its front and share at the end
+    dx_end = states["end"]["x"] - x0
+    other = (np.hypot(dx_end, states["end"]["y"] - y0) > moved) & (direction * dx_end < 0.0)
+    moving_mass = rows[-1]["moved_mass_fraction"] * mass0.sum()
+    rows[-1]["other_side"] = ({"front_x": float(-direction * np.max(-direction * states["end"]["x"][other])),
+                               "share": float(mass0[other].sum() / moving_mass)}
+                              if np.any(other) and moving_mass > 0 else None)
     return rows, states, direction
 
+
+# A failure on both sides: the summary names the second front when that side holds this share of the moving mass.
+OTHER_SIDE_SHARE = 0.1
 
 SERIES_COLUMNS = ("time", "runout", "front_x", "height", "moved_mass_fraction", "potential_energy", "kinetic_energy",
                   "kinetic_energy_x", "kinetic_energy_y", "max_speed")
@@ -265,11 +275,16 @@ def write_summary(out, args, command, forward, script_args, walls, rows, directi
               if np.isfinite(end["front_x"]) else
               "| front of the moving mass | none: no particle travelled more than %g m (--moved) |" % args.moved,
               "| mass moving | %.1f %% |" % (100 * end["moved_mass_fraction"]),
+              ("| and moving %s, %.0f %% of the moving mass | front x = %.4g m |"
+               % ("left (-x)" if direction > 0 else "right (+x)", 100 * end["other_side"]["share"],
+                  end["other_side"]["front_x"]))
+              if end.get("other_side") and end["other_side"]["share"] >= OTHER_SIDE_SHARE else None,
               "| height (99.5th percentile of y) at T -> end | %.4g m -> %.4g m |" % (rows[0]["height"], end["height"]),
               "| potential energy released | %.4g kJ/m |" % ((rows[0]["potential_energy"] - end["potential_energy"]) / 1e3),
               "| kinetic energy at T -> end (largest) | %.4g -> %.4g kJ/m (%.4g) |"
               % (rows[0]["kinetic_energy"] / 1e3, end["kinetic_energy"] / 1e3, max(r["kinetic_energy"] for r in rows) / 1e3),
               "| largest speed at the end | %.3g m/s |" % end["max_speed"], ""]
+    lines = [ln for ln in lines if ln is not None]
     if warnings:
         lines += ["## Warnings", ""] + ["- `%s`" % w for w in warnings] + [""]
     if end["max_speed"] > 0.05:
@@ -365,6 +380,9 @@ def main(argv=None):
         return e.exit_code()
     front = ("front x = %.4g m" % rows[-1]["front_x"]) if np.isfinite(rows[-1]["front_x"]) else \
         "no moving front (no travel above %g m)" % args.moved
+    other = rows[-1].get("other_side")
+    if other and other["share"] >= OTHER_SIDE_SHARE:
+        front += " (and x = %.4g m the other way, %.0f %% of the moving mass)" % (other["front_x"], 100 * other["share"])
     print("%s: done: runout %.3g m, %s, %.0f %% of the mass moving at t = %g s; %s"
           % (PROG, rows[-1]["runout"], front, 100 * rows[-1]["moved_mass_fraction"], rows[-1]["time"],
              os.path.join(out, "summary.md")), flush=True)

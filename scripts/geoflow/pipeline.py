@@ -115,11 +115,27 @@ def run_fem2mpm(bins, fem_dir, out, t_transfer, options=(), logfile=None):
     return wall
 
 
+def resume_file(deck_path, deck):
+    """The particle file a resuming deck reads: <path>/<uuid>/particles<step>.h5, the step zero-padded to the
+    digits of nsteps (CB-Geo's names; mpm/io/particle_table.cpp particle_file_name); None without a resume."""
+    r = deck["analysis"].get("resume", {})
+    if not r.get("resume"):
+        return None
+    digits = len(str(max(int(deck["analysis"]["nsteps"]), 1)))
+    return os.path.join(os.path.dirname(os.path.abspath(deck_path)), deck.get("post_processing", {}).get("path", "results/"),
+                        r["uuid"], "particles%0*d.h5" % (digits, int(r.get("step", 0))))
+
+
 def edit_deck(deck_path, edit):
-    """Loads mpm.json, calls edit(deck) and writes it back (write-then-rename)."""
+    """Loads mpm.json, calls edit(deck) and writes it back (write-then-rename). A resume file whose name
+    changes with the edit (nsteps gaining or losing a digit) is renamed with it."""
     with open(deck_path) as f:
         deck = json.load(f)
+    before = resume_file(deck_path, deck)
     edit(deck)
+    after = resume_file(deck_path, deck)
+    if before and after and before != after and os.path.exists(before):
+        os.replace(before, after)
     tmp = deck_path + ".tmp"
     with open(tmp, "w") as f:
         json.dump(deck, f, indent=2)

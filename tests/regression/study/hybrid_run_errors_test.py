@@ -2,7 +2,8 @@
 """scripts/hybrid_run.py on bad input: one line on stderr naming what was expected, exit 2, and no summary
 written. Cases: a missing model; an option without its value; an option the driver sets itself; a script
 that does not write the contracted files (model.json, disp.out, vel.out, stress.out) in its output folder;
-a transfer time after the last recorded row. Each case is a few fem_tcl commands (well under a second)."""
+a transfer time after the last recorded row. Each case is a few fem_tcl commands (well under a second). Then one
+run that works, with a warning to repeat and a resume file to rename (below)."""
 import argparse
 import os
 import shutil
@@ -60,6 +61,19 @@ def main():
     case("option set by the driver", [good, "--transfer", "0", "--time", "1"], "--time is set by the driver")
     case("contract not met", [bad, "--transfer", "0"], "did not write disp.out")
     case("transfer after the last row", [good, "--transfer", "1.5"], "recorded only to t = 0 s")
+
+    # A run that works: fem2mpm's warning (the density 2 looks like Mg/m3) repeated on stderr and in
+    # summary.md; and with --dt 5 fem2mpm's deck has 1 step, the driver's 41 (40 outputs), so the name of
+    # the resume file gains a digit (particles0.h5 -> particles00.h5): renamed with the edit (it was not
+    # found before 2026-12-03, exit 2).
+    out = os.path.join(tmp, "out_runs")
+    r = subprocess.run([sys.executable, driver, good, "--transfer", "0", "--duration", "1", "--dt", "5", "--bin", args.bin,
+                        "--out", out], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    checks.expect("a run whose resume file name gains a digit", r.returncode == 0, ": exit %d, %s" % (r.returncode, r.stderr))
+    checks.expect("fem2mpm's warning repeated on stderr", "fem2mpm: warning: material '1': density 2 kg/m3" in r.stderr,
+                  ": %r" % r.stderr)
+    summary = open(os.path.join(out, "summary.md")).read() if os.path.exists(os.path.join(out, "summary.md")) else ""
+    checks.expect("and listed in summary.md", "## Warnings" in summary and "looks like Mg/m3" in summary, ": %r" % summary)
     shutil.rmtree(tmp, ignore_errors=True)
     return checks.exit_status()
 
