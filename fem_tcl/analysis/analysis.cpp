@@ -73,6 +73,11 @@ void Analysis::setup() {
     for (int d : c.dofs) {
       if (penalty) penalty_pairs_.push_back({2 * index[r] + d, 2 * index[k] + d});
       else alias[2 * index[k] + d] = 2 * index[r] + d;
+      if (!penalty && state[2 * index[k] + d] == kFixed && state[2 * index[r] + d] == kFree) {
+        std::cerr << "WARNING equalDOF " << c.retained << ' ' << c.constrained << ": dof " << d + 1 << " of the constrained node "
+                  << c.constrained << " is also fixed, so the tie is not enforced (node " << c.retained
+                  << " stays free in it); fix the retained node instead\n";
+      }
     }
   }
   eq_.assign(ndof, -1);
@@ -221,7 +226,9 @@ void Analysis::form_tangent() {
       if (q >= 0 && values[diag_pos_[q]] == 0.0) {
         throw common::NumericalError("the system matrix is singular: node " + std::to_string(nodes_[n]->tag) +
                                      " dof " + std::to_string(d + 1) +
-                                     " has no stiffness (unconnected node or missing support)");
+                                     (c1_ == 0.0 ? " has no mass (an explicit integrator's matrix is the mass: give the "
+                                                   "materials a rho or the node a mass)"
+                                                 : " has no stiffness (unconnected node or missing support)"));
       }
     }
   }

@@ -439,6 +439,30 @@ TEST(TclCommands, RecorderTagsAndRemoval) {
   EXPECT_EQ(test_support::read_numeric_table(b).size(), 1u);
 }
 
+TEST(TclCommands, ConflictingTieAndMasslessExplicitStepAreSaid) {
+  // fix on the constrained dof of an equalDOF: the tie cannot hold (Transformation), so a warning says so;
+  // CentralDifference on a massless model names the missing mass, not a missing support.
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kTwoElementModel) + "fix 3 1 0\nequalDOF 6 3 1 2\n"), "");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(interp.eval("constraints Transformation; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5\n"
+                        "algorithm Newton; integrator LoadControl 1.0; analysis Static; analyze 1"),
+            "0");
+  const std::string tie = testing::internal::GetCapturedStderr();
+  EXPECT_NE(tie.find("WARNING equalDOF 6 3: dof 1 of the constrained node 3 is also fixed"), std::string::npos) << tie;
+  Interpreter explicit_step;
+  ASSERT_EQ(error_of(explicit_step, "model basic -ndm 2 -ndf 2\nnode 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1\n"
+                                    "fix 1 1 1; fix 2 1 1\nnDMaterial ElasticIsotropic 1 1000.0 0.25\n"
+                                    "element quad 1 1 2 3 4 1.0 PlaneStrain 1\n"),
+            "");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(explicit_step.eval("constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5\n"
+                               "algorithm Linear; integrator CentralDifference; analysis Transient; analyze 1 0.01"),
+            "-3");
+  const std::string massless = testing::internal::GetCapturedStderr();
+  EXPECT_NE(massless.find("node 3 dof 1 has no mass"), std::string::npos) << massless;
+}
+
 TEST(TclCommands, AnErrorInsideLoopsNamesItsOwnLine) {
   // Meshes are built in loops: the line named is the failing command's, not the outer loop's first
   // (errorInfo's '("for" body line N)' frames summed), also through a procedure called in a loop.
