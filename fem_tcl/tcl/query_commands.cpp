@@ -1,6 +1,8 @@
 // Queries (nodeDisp ... getLoadFactor) in OpenSees' "%35.20f" format, record, recorder, print -JSON.
 #include <cstdio>
 #include <iostream>
+#include <sstream>
+#include <vector>
 
 #include "common/atomic_file.hpp"
 #include "fem_tcl/recorders/recorders.hpp"
@@ -223,22 +225,81 @@ void write_model_json(Context& ctx, std::ostream& os) {
 
 }  // namespace
 
+namespace {
+/// OpenSees' text print of a node (Node::Print, flag 0): coordinates, displacements, velocities,
+/// unbalanced load and reaction.
+void print_node(std::ostream& out, const domain::Node& n) {
+  const auto pair = [&](const char* what, const domain::Vector2& v) { out << "\n\t" << what << v[0] << ' ' << v[1]; };
+  out << "\n Node: " << n.tag;
+  pair("Coordinates  : ", n.crd);
+  pair("Disps: ", n.disp);
+  pair("Velocities   : ", n.vel);
+  pair("unbalanced Load: ", n.load);
+  pair("Reaction: ", n.reaction);
+  out << "\n";
+}
+/// An element: tag, type, nodes and resisting forces (the 2 per node of Element::resisting_force).
+void print_element(std::ostream& out, domain::Element& e, int tag) {
+  out << "\nElement: " << tag << " type: " << e.type_name() << "\n\tConnected Nodes:";
+  for (int a = 0; a < e.num_nodes(); ++a) out << ' ' << e.nodes()[a]->tag;
+  out << "\n\tResisting force:";
+  const domain::Vector8& f = e.resisting_force();
+  for (int i = 0; i < 2 * e.num_nodes(); ++i) out << ' ' << f[i];
+  out << "\n";
+}
+/// Tags after -node / -ele (OpenSees' optional `-flag f` is read and ignored: one level of detail here).
+std::vector<int> print_tags(common::CommandArgs& args) {
+  if (args.flag("-flag")) args.integer("-flag value");
+  std::vector<int> tags;
+  while (auto t = args.optional_integer()) tags.push_back(*t);
+  return tags;
+}
+}  // namespace
+
+/// `print -JSON <-file f>` (the model for fem2mpm), or OpenSees' text print: `print <file> <-node <-flag f>
+/// tags..> <-ele <-flag f> tags..>` (no tags: every node / element; neither option: the whole model), to
+/// the file or, as OpenSees' opserr, to stderr.
 std::string cmd_print(Context& ctx, common::CommandArgs& args) {
-  bool json = false;
+  bool json = false, nodes = false, elements = false;
   std::string file;
+  std::vector<int> node_tags, element_tags;
   while (!args.empty()) {
     if (args.flag("-JSON")) json = true;
     else if (args.flag("-file")) file = args.word("-file name");
-    else args.fail("unsupported option '" + args.peek() + "' (fem_tcl prints the model with -JSON only)");
+    else if (args.flag("-node")) { nodes = true; node_tags = print_tags(args); }
+    else if (args.flag("-ele")) { elements = true; element_tags = print_tags(args); }
+    else if (args.peek().rfind('-', 0) == 0) args.fail("unsupported option '" + args.peek() + "' (-JSON, -file, -node, -ele)");
+    else file = args.word("file name");
   }
-  if (!json) args.fail("only 'print -JSON <-file f>' is supported");
+  if (json) {
+    if (nodes || elements) args.fail("-JSON prints the whole model; give -node / -ele without it");
+    if (file.empty()) {
+      write_model_json(ctx, std::cout);
+      std::cout.flush();
+      return {};
+    }
+    common::AtomicTextFile out(file);
+    write_model_json(ctx, out.stream());
+    out.commit();
+    return {};
+  }
+  if (!nodes && !elements) nodes = elements = true;
+  std::ostringstream text;
+  text.precision(10);
+  if (nodes) {
+    if (node_tags.empty()) for (const auto& [tag, n] : ctx.domain.nodes()) node_tags.push_back(tag);
+    for (int tag : node_tags) print_node(text, ctx.domain.node(tag, args.command()));
+  }
+  if (elements) {
+    if (element_tags.empty()) for (const auto& [tag, e] : ctx.domain.elements()) element_tags.push_back(tag);
+    for (int tag : element_tags) print_element(text, ctx.domain.element(tag, args.command()), tag);
+  }
   if (file.empty()) {
-    write_model_json(ctx, std::cout);
-    std::cout.flush();
+    std::cerr << text.str();
     return {};
   }
   common::AtomicTextFile out(file);
-  write_model_json(ctx, out.stream());
+  out.stream() << text.str();
   out.commit();
   return {};
 }

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "fem_tcl/tcl/interpreter.hpp"
@@ -461,6 +462,27 @@ TEST(TclCommands, ConflictingTieAndMasslessExplicitStepAreSaid) {
             "-3");
   const std::string massless = testing::internal::GetCapturedStderr();
   EXPECT_NE(massless.find("node 3 dof 1 has no mass"), std::string::npos) << massless;
+}
+
+TEST(TclCommands, PrintNodesAndElementsAsText) {
+  // OpenSees' `print -node tags`, `print -ele tags`, `print file`: text to stderr (opserr) or the file.
+  test_support::ScratchDir dir("fem_tcl_print");
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, kTwoElementModel), "");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(interp.eval("print -node 5 6; print -ele -flag 1 2"), "");
+  const std::string text = testing::internal::GetCapturedStderr();
+  EXPECT_NE(text.find(" Node: 5\n\tCoordinates  : 1 1\n"), std::string::npos) << text;
+  EXPECT_NE(text.find(" Node: 6\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find(" Node: 4\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("Element: 2 type: SSPquad\n\tConnected Nodes: 2 3 6 5\n"), std::string::npos) << text;
+  const std::string file = (dir.path() / "model.txt").string();
+  EXPECT_EQ(interp.eval("print " + file), "");
+  std::ifstream in(file);
+  const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(whole.find(" Node: 1\n"), std::string::npos);
+  EXPECT_NE(whole.find("Element: 1 type: FourNodeQuad"), std::string::npos) << whole;
+  EXPECT_NE(error_of(interp, "print -node 99").find("node 99"), std::string::npos);
 }
 
 TEST(TclCommands, AnErrorInsideLoopsNamesItsOwnLine) {
