@@ -5,10 +5,12 @@
 #include <iostream>
 
 #include "common/printable_text.hpp"
+#include "fem_tcl/recorders/envelope_recorder.hpp"
 
 namespace fem::recorders {
 
 TextRecorder::TextRecorder(RecorderOptions options) : options_(std::move(options)) {
+  if (options_.path.empty()) return;  // a source of values only (EnvelopeRecorder)
   out_.open(options_.path, std::ios::out | std::ios::trunc);
   if (!out_) throw common::InputError("recorder", "cannot open '" + options_.path + "' for writing");
   out_.precision(options_.precision);
@@ -124,11 +126,12 @@ std::vector<int> read_integers(common::CommandArgs& args) {
 }  // namespace
 
 std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain) {
-  const std::string type = args.word("type (Node, Element or MeshQuality)");
-  if (type != "Node" && type != "Element" && type != "MeshQuality") {
-    args.fail("unknown recorder type '" + type + "' (Node, Element or MeshQuality)");
+  const std::string type = args.word("type (Node, Element, EnvelopeNode, EnvelopeElement or MeshQuality)");
+  const bool envelope = type == "EnvelopeNode" || type == "EnvelopeElement";
+  if (type != "Node" && type != "Element" && type != "MeshQuality" && !envelope) {
+    args.fail("unknown recorder type '" + type + "' (Node, Element, EnvelopeNode, EnvelopeElement or MeshQuality)");
   }
-  const bool is_node = type == "Node";
+  const bool is_node = type == "Node" || type == "EnvelopeNode";
   const bool is_mesh = type == "MeshQuality";
   RecorderOptions opt;
   std::vector<int> tags, dofs;
@@ -222,6 +225,11 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
       std::cerr << "WARNING recorder Node -file " << opt.path
                 << ": no -dof given, so nothing will be written (as OpenSees); add e.g. -dof 1 2\n";
     }
+    if (envelope) {
+      RecorderOptions source;  // no file: the envelope writes
+      return std::make_unique<EnvelopeRecorder>(
+          opt, std::make_unique<NodeRecorder>(source, domain, std::move(nodes), std::move(dofs), r, !selected));
+    }
     return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r, !selected);
   }
   std::vector<std::pair<int, std::size_t>> elements;
@@ -234,6 +242,10 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
       args.fail("element " + std::to_string(t) + " (" + e.type_name() + ") has no response '" + joined + "'");
     }
     elements.emplace_back(t, values->size());
+  }
+  if (envelope) {
+    return std::make_unique<EnvelopeRecorder>(
+        opt, std::make_unique<ElementRecorder>(RecorderOptions{}, domain, std::move(elements), std::move(response)));
   }
   return std::make_unique<ElementRecorder>(opt, domain, std::move(elements), std::move(response));
 }

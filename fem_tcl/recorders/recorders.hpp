@@ -20,13 +20,16 @@ struct RecorderOptions {
   bool close_on_write = false;
 };
 
-/// A row-per-commit text file with the -dT rule and -closeOnWrite.
+/// A row-per-commit text file with the -dT rule and -closeOnWrite. An empty path opens no file: the
+/// recorder is then only a source of values (EnvelopeRecorder).
 class TextRecorder : public domain::Recorder {
  public:
   explicit TextRecorder(RecorderOptions options);
   ~TextRecorder() override;
   void record(double time) final;
   void flush() override;
+  /// The values of a row now (without the time column): what an envelope recorder reads.
+  void values(std::vector<double>& row) { collect(row); }
 
  protected:
   /// Appends the row's values (without the time column).
@@ -96,7 +99,8 @@ class MeshQualityRecorder final : public TextRecorder {
   const domain::Domain& domain_;
 };
 
-/// `recorder Node|Element|MeshQuality ...` (args start at the type word). Throws common::InputError.
+/// `recorder Node|Element|EnvelopeNode|EnvelopeElement|MeshQuality ...` (args start at the type word).
+/// Throws common::InputError.
 std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain);
 
 }  // namespace fem::recorders

@@ -464,6 +464,45 @@ TEST(TclCommands, ConflictingTieAndMasslessExplicitStepAreSaid) {
   EXPECT_NE(massless.find("node 3 dof 1 has no mass"), std::string::npos) << massless;
 }
 
+TEST(TclCommands, EnvelopeRecordersWriteMinMaxAndAbsMaxRows) {
+  // OpenSees' EnvelopeNode / EnvelopeElement: three rows (min, max, max |.|) of each column over the
+  // steps recorded, with -time the time of each before it. A spring-mass released from u0 = 0.01 swings
+  // between -u0 and +u0 (undamped trapezoidal rule: the amplitude is kept).
+  test_support::ScratchDir dir("fem_tcl_envelope");
+  Interpreter interp;
+  const std::string node = (dir.path() / "env_node.out").string(), ele = (dir.path() / "env_ele.out").string();
+  std::string message;
+  ASSERT_TRUE(interp.eval_script("model basic -ndm 2 -ndf 2\nnode 1 0 0; node 2 0 0\nfix 1 1 1; fix 2 0 1\n"
+                                 "mass 2 1.0 1.0\nuniaxialMaterial Elastic 1 100.0\n"
+                                 "element zeroLength 1 1 2 -mat 1 -dir 1\n"
+                                 "recorder EnvelopeNode -file " + node + " -time -node 2 -dof 1 disp\n"
+                                 "recorder EnvelopeElement -file " + ele + " -ele 1 force\n",
+                                 "test", message))
+      << message;
+  // u0 = 0.01 by a static step under a unit load, then free vibration
+  ASSERT_TRUE(interp.eval_script("timeSeries Constant 1\npattern Plain 1 1 { load 2 1.0 0.0 }\n"
+                                 "constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5\n"
+                                 "algorithm Linear; integrator LoadControl 1.0; analysis Static; analyze 1\n"
+                                 "loadConst -time 0.0; remove loadPattern 1; wipeAnalysis\n"
+                                 "constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5\n"
+                                 "algorithm Linear; integrator Newmark 0.5 0.25; analysis Transient; analyze 200 0.01\n",
+                                 "test", message))
+      << message;
+  interp.context().domain.flush_recorders();
+  const auto rows = test_support::read_numeric_table(node);
+  ASSERT_EQ(rows.size(), 3u);
+  ASSERT_EQ(rows[0].size(), 2u);  // time, value
+  EXPECT_NEAR(rows[0][1], -0.01, 2e-4);  // min (the 200 steps of 0.01 s sample the 0.63 s period finely)
+  EXPECT_NEAR(rows[1][1], 0.01, 1e-12);  // max: the start (the static state, recorded at t = 0)
+  EXPECT_EQ(rows[2][1], std::max(std::abs(rows[0][1]), rows[1][1]));
+  EXPECT_GT(rows[0][0], 0.0);  // the time of the minimum, about half a period in
+  const auto forces = test_support::read_numeric_table(ele);
+  ASSERT_EQ(forces.size(), 3u);
+  ASSERT_EQ(forces[0].size(), 4u);  // the forces at the two nodes (x, y)
+  EXPECT_NEAR(forces[2][2], 1.0, 1e-12);  // largest |force| at node 2 along x: k u0 = 1, at the start
+  EXPECT_NEAR(forces[0][2], -1.0, 2e-2);
+}
+
 TEST(TclCommands, PrintNodesAndElementsAsText) {
   // OpenSees' `print -node tags`, `print -ele tags`, `print file`: text to stderr (opserr) or the file.
   test_support::ScratchDir dir("fem_tcl_print");
