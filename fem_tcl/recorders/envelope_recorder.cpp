@@ -29,7 +29,7 @@ void EnvelopeRecorder::record(double time) {
     next_time_ = time + options_.delta_t;
   }
   row_.clear();
-  source_->values(row_);
+  source_->values(row_, time);
   if (min_.empty()) {
     min_ = max_ = row_;
     abs_.resize(row_.size());

@@ -38,6 +38,7 @@ void TextRecorder::record(double time) {
   row_.clear();
   if (options_.time_column) row_.push_back(time);
   const std::size_t before = row_.size();
+  time_ = time;
   collect(row_);
   if (row_.size() == before) return;  // nothing to write (e.g. a Node recorder without -dof)
   if (failed_) return;
@@ -63,9 +64,10 @@ void TextRecorder::flush() {
 }
 
 NodeRecorder::NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<int> nodes,
-                           std::vector<int> dofs, NodeResponse response, bool all_nodes)
+                           std::vector<int> dofs, NodeResponse response, bool all_nodes,
+                           std::vector<std::shared_ptr<const domain::TimeSeries>> series)
     : TextRecorder(std::move(options)), domain_(domain), nodes_(std::move(nodes)), dofs_(std::move(dofs)),
-      response_(response), all_nodes_(all_nodes) {}
+      response_(response), all_nodes_(all_nodes), series_(std::move(series)) {}
 
 void NodeRecorder::collect(std::vector<double>& row) {
   if (dofs_.empty()) return;
@@ -89,7 +91,8 @@ void NodeRecorder::collect(std::vector<double>& row) {
       case NodeResponse::Reaction: v = &n->reaction; break;
       case NodeResponse::Unbalance: v = &n->load; break;
     }
-    for (int d : dofs_) row.push_back((*v)[d]);
+    for (std::size_t j = 0; j < dofs_.size(); ++j)
+      row.push_back((*v)[dofs_[j]] + (j < series_.size() && series_[j] ? series_[j]->factor(time()) : 0.0));
   }
 }
 
@@ -125,7 +128,8 @@ std::vector<int> read_integers(common::CommandArgs& args) {
 
 }  // namespace
 
-std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain) {
+std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain,
+                                                 const std::map<int, std::shared_ptr<domain::TimeSeries>>& series) {
   const std::string type = args.word("type (Node, Element, EnvelopeNode, EnvelopeElement or MeshQuality)");
   const bool envelope = type == "EnvelopeNode" || type == "EnvelopeElement";
   if (type != "Node" && type != "Element" && type != "MeshQuality" && !envelope) {
@@ -135,6 +139,7 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
   const bool is_mesh = type == "MeshQuality";
   RecorderOptions opt;
   std::vector<int> tags, dofs;
+  std::vector<std::shared_ptr<const domain::TimeSeries>> dof_series;  // -timeSeries, per -dof entry
   bool have_dof = false, have_file = false;
   bool selected = false;  // a -node/-nodeRange/-ele/-eleRange/-region option was given (OpenSees: else all)
   std::vector<std::string> response;
@@ -164,6 +169,14 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
       if (region == nullptr) args.fail("region " + std::to_string(r) + " does not exist");
       const std::vector<int>& t = is_node ? region->nodes : region->elements;
       tags.insert(tags.end(), t.begin(), t.end());
+    } else if (is_node && args.flag("-timeSeries")) {  // OpenSees: one series per dof, added to the response
+      const auto t = read_integers(args);
+      if (t.empty()) args.fail("missing time series tags after -timeSeries");
+      for (int tag : t) {
+        const auto it = series.find(tag);
+        if (it == series.end()) args.fail("timeSeries " + std::to_string(tag) + " does not exist");
+        dof_series.push_back(it->second);
+      }
     } else if (is_node && args.flag("-dof")) {
       have_dof = true;
       for (int d : read_integers(args)) {
@@ -228,9 +241,11 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     if (envelope) {
       RecorderOptions source;  // no file: the envelope writes
       return std::make_unique<EnvelopeRecorder>(
-          opt, std::make_unique<NodeRecorder>(source, domain, std::move(nodes), std::move(dofs), r, !selected));
+          opt, std::make_unique<NodeRecorder>(source, domain, std::move(nodes), std::move(dofs), r, !selected,
+                                              std::move(dof_series)));
     }
-    return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r, !selected);
+    return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r, !selected,
+                                          std::move(dof_series));
   }
   std::vector<std::pair<int, std::size_t>> elements;
   for (int t : tags) {

@@ -3,12 +3,14 @@
 // by single spaces, default C++ stream formatting at `-precision` significant digits (6 by default),
 // optional leading time column, `-dT` rows on OpenSees' absolute "next time" rule (quirk 6).
 #include <fstream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "common/command_args.hpp"
 #include "fem_tcl/domain/domain.hpp"
+#include "fem_tcl/domain/time_series.hpp"
 
 namespace fem::recorders {
 
@@ -28,12 +30,17 @@ class TextRecorder : public domain::Recorder {
   ~TextRecorder() override;
   void record(double time) final;
   void flush() override;
-  /// The values of a row now (without the time column): what an envelope recorder reads.
-  void values(std::vector<double>& row) { collect(row); }
+  /// The values of a row at `time` (without the time column): what an envelope recorder reads.
+  void values(std::vector<double>& row, double time) {
+    time_ = time;
+    collect(row);
+  }
 
  protected:
   /// Appends the row's values (without the time column).
   virtual void collect(std::vector<double>& row) = 0;
+  /// The time of the row being collected.
+  double time() const { return time_; }
 
  private:
   /// Throws common::OutputError naming the file the first time the stream has failed.
@@ -43,6 +50,7 @@ class TextRecorder : public domain::Recorder {
   std::ofstream out_;
   bool failed_ = false;
   double next_time_ = 0.0;
+  double time_ = 0.0;
   std::vector<double> row_;
 };
 
@@ -53,8 +61,11 @@ enum class NodeResponse { Disp, Vel, Accel, IncrDisp, Reaction, Unbalance };
 class NodeRecorder final : public TextRecorder {
  public:
   /// `all_nodes`: no node was selected, so (as OpenSees) every node of the domain at the first record.
+  /// `series` (OpenSees -timeSeries): per entry of `dofs`, a series whose factor is added to the response
+  /// (the ground motion, for absolute accelerations under UniformExcitation), or null.
   NodeRecorder(RecorderOptions options, domain::Domain& domain, std::vector<int> nodes, std::vector<int> dofs,
-               NodeResponse response, bool all_nodes = false);
+               NodeResponse response, bool all_nodes = false,
+               std::vector<std::shared_ptr<const domain::TimeSeries>> series = {});
 
  protected:
   /// Each node looked up by tag: a node removed since (`remove node`) writes zeros in its columns.
@@ -66,6 +77,7 @@ class NodeRecorder final : public TextRecorder {
   std::vector<int> dofs_;  ///< 0-based
   NodeResponse response_;
   bool all_nodes_;
+  std::vector<std::shared_ptr<const domain::TimeSeries>> series_;
 };
 
 class ElementRecorder final : public TextRecorder {
@@ -101,6 +113,8 @@ class MeshQualityRecorder final : public TextRecorder {
 
 /// `recorder Node|Element|EnvelopeNode|EnvelopeElement|MeshQuality ...` (args start at the type word).
 /// Throws common::InputError.
-std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain);
+/// `series`: the model's time series (for -timeSeries).
+std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, domain::Domain& domain,
+                                                 const std::map<int, std::shared_ptr<domain::TimeSeries>>& series);
 
 }  // namespace fem::recorders

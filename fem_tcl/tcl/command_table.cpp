@@ -60,7 +60,7 @@ constexpr std::array kCommands{
     CommandEntry{"record", "record", 0, cmd_record},
     CommandEntry{"minJacobian", "minJacobian <-ratio>", 0, cmd_min_jacobian},
     CommandEntry{"meshQuality", "meshQuality <-warn ratio>", 0, cmd_mesh_quality},
-    CommandEntry{"recorder", "recorder Node|Element|EnvelopeNode|EnvelopeElement|MeshQuality -file f <-time> <-dT dt> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b | -region r -dof d.. | -ele e.. | -eleRange a b | -region r) response..", 1, cmd_recorder},
+    CommandEntry{"recorder", "recorder Node|Element|EnvelopeNode|EnvelopeElement|MeshQuality -file f <-time> <-dT dt> <-timeSeries tags> <-precision n> <-closeOnWrite> (-node n.. | -nodeRange a b | -region r -dof d.. | -ele e.. | -eleRange a b | -region r) response..", 1, cmd_recorder},
     CommandEntry{"print", "print -JSON <-file f> | print <file> <-node <-flag f> tags..> <-ele <-flag f> tags..>", 0, cmd_print},
 };
 }  // namespace

@@ -156,7 +156,7 @@ std::string cmd_record(Context& ctx, common::CommandArgs& args) {
 }
 
 std::string cmd_recorder(Context& ctx, common::CommandArgs& args) {
-  return std::to_string(ctx.domain.add_recorder(recorders::parse_recorder(args, ctx.domain)));
+  return std::to_string(ctx.domain.add_recorder(recorders::parse_recorder(args, ctx.domain, ctx.time_series)));
 }
 
 namespace {

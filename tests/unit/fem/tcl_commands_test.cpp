@@ -503,6 +503,35 @@ TEST(TclCommands, EnvelopeRecordersWriteMinMaxAndAbsMaxRows) {
   EXPECT_NEAR(forces[0][2], -1.0, 2e-2);
 }
 
+TEST(TclCommands, NodeRecorderTimeSeriesAddsTheGroundMotion) {
+  // OpenSees' -timeSeries: the series factor is added to the recorded response (absolute acceleration =
+  // relative + ground under UniformExcitation); one series per -dof entry.
+  test_support::ScratchDir dir("fem_tcl_abs_accel");
+  Interpreter interp;
+  const std::string rel = (dir.path() / "rel.out").string(), abs = (dir.path() / "abs.out").string();
+  std::string message;
+  ASSERT_TRUE(interp.eval_script("model basic -ndm 2 -ndf 2\nnode 1 0 0; node 2 0 0\nfix 1 1 1; fix 2 0 1\n"
+                                 "mass 2 1.0 1.0\nuniaxialMaterial Elastic 1 100.0\n"
+                                 "element zeroLength 1 1 2 -mat 1 -dir 1\n"
+                                 "timeSeries Path 2 -dt 0.1 -values {0.0 1.0 -2.0 0.5 0.0} -factor 9.81\n"
+                                 "pattern UniformExcitation 3 1 -accel 2\n"
+                                 "recorder Node -file " + rel + " -time -node 2 -dof 1 accel\n"
+                                 "recorder Node -file " + abs + " -time -timeSeries 2 -node 2 -dof 1 accel\n"
+                                 "constraints Plain; numberer Plain; system UmfPack; test NormUnbalance 1e-10 5\n"
+                                 "algorithm Linear; integrator Newmark 0.5 0.25; analysis Transient; analyze 4 0.1\n",
+                                 "test", message))
+      << message;
+  interp.context().domain.flush_recorders();
+  const auto r = test_support::read_numeric_table(rel), a = test_support::read_numeric_table(abs);
+  ASSERT_EQ(r.size(), 4u);
+  ASSERT_EQ(a.size(), 4u);
+  const double ground[] = {9.81, -19.62, 4.905, 0.0};  // the series at t = 0.1 .. 0.4
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(a[k][1] - r[k][1], ground[k], 1e-4) << "row " << k;
+  EXPECT_NE(error_of(interp, "recorder Node -file " + abs + " -timeSeries 9 -node 2 -dof 1 accel").find(
+                "timeSeries 9 does not exist"),
+            std::string::npos);
+}
+
 TEST(TclCommands, PrintNodesAndElementsAsText) {
   // OpenSees' `print -node tags`, `print -ele tags`, `print file`: text to stderr (opserr) or the file.
   test_support::ScratchDir dir("fem_tcl_print");
