@@ -8,7 +8,7 @@ inflated), runs the program in a fresh folder with a time limit, and classifies 
 
   success       exit 0, outputs complete and finite
   clean error   exit 1, 2 or 3 with a one-line printable message (fem_tcl: the last line)
-  unclear error exit 1, 2 or 3 but an empty, multi-line or non-printable message
+  unclear error exit 1, 2 or 3 but an empty, multi-line (warning lines before the error line aside) or non-printable message
   crash         a signal, a sanitizer report, or any other exit status
   hang          the time limit was reached
   non-finite    exit 0 but an output holds nan/inf (or JSON null where a number belongs)
@@ -122,6 +122,8 @@ def message_is_clean(err: bytes, last_line_only: bool) -> bool:
     lines = [l for l in err.split(b"\n") if l.strip()]
     if not lines:
         return False
+    # warnings before the error line ("mpm: warning: analysis.dt ... above the elastic limit") are not the error
+    lines = [l for l in lines[:-1] if b": warning: " not in l] + lines[-1:]
     if not last_line_only and len(lines) != 1:
         return False
     try:  # valid UTF-8 without control characters (common::printable escapes everything else)
