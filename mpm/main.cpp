@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 #include "common/printable_text.hpp"
 #include "mpm/core/energy_audit.hpp"
 #include "mpm/core/simulation.hpp"
@@ -26,25 +27,26 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
   mpm::io::ResultsWriter results(deck);
   mpm::io::ProgressLine progress(deck.first_step, deck.analysis.nsteps);
   const long long nsteps = deck.analysis.nsteps, every = deck.output.output_steps;
-  // With analysis.locate_particles false, particles that leave the grid are removed (CB-Geo's rule):
-  // said when it first happens and counted at the end, never silently.
-  const std::size_t particles_at_start = sim.particle_count();
-  bool removal_said = false;
-  const auto say_removed = [&](const char* first_or_all) {
-    std::fprintf(stderr, "mpm: warning: %s%zu of %zu particles left the grid and were removed by t = %.6g s "
-                 "(analysis.locate_particles is false)\n", first_or_all, particles_at_start - sim.particle_count(),
-                 particles_at_start, sim.time());
-  };
-  if (sim.courant_number() > 1.0)
-    std::fprintf(stderr, "mpm: warning: analysis.dt = %.6g s is above the elastic limit h / c_p = %.6g s (Courant number "
-                 "%.3g): the explicit step is unstable there; use analysis.cfl (0.5 or less) or a smaller dt\n",
-                 sim.dt(), sim.dt() / sim.courant_number(), sim.courant_number());
-  mpm::core::EnergyAudit energy(deck);
+  // Warnings during the run end the progress line first. With analysis.locate_particles false, particles
+  // that leave the grid are removed (CB-Geo's rule): said when it first happens and counted at the end.
   const auto say = [&](const std::string& warning) {
     if (warning.empty()) return;
     progress.finish();
     std::fprintf(stderr, "mpm: warning: %s\n", warning.c_str());
   };
+  const std::size_t particles_at_start = sim.particle_count();
+  bool removal_said = false;
+  const auto removed = [&](const std::string& first_or_all) {
+    return first_or_all + std::to_string(particles_at_start - sim.particle_count()) + " of " +
+           std::to_string(particles_at_start) + " particles left the grid and were removed by t = " +
+           common::number_text(sim.time(), 6) + " s (analysis.locate_particles is false)";
+  };
+  if (sim.courant_number() > 1.0)
+    say("analysis.dt = " + common::number_text(sim.dt(), 6) + " s is above the elastic limit h / c_p = " +
+        common::number_text(sim.dt() / sim.courant_number(), 6) + " s (Courant number " +
+        common::number_text(sim.courant_number(), 3) + "): the explicit step is unstable there; use analysis.cfl (0.5 "
+        "or less) or a smaller dt");
+  mpm::core::EnergyAudit energy(deck);
   try {
     const auto start = sim.snapshot();
     results.write_start(sim.time(), start);
@@ -59,8 +61,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
         say(energy.check(sim.time(), state));
       }
       if (!removal_said && sim.particle_count() < particles_at_start) {
-        progress.finish();
-        say_removed("");
+        say(removed(""));
         removal_said = true;
       }
       progress.update(step, sim.time(), sim.dt(), sim.particle_count());
@@ -76,7 +77,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
     return 3;
   }
   progress.finish();
-  if (removal_said) say_removed("in all, ");
+  if (removal_said) say(removed("in all, "));
   if (sim.step_index() > deck.first_step && (sim.step_index() - 1) % every != 0)
     results.write_series_row(sim.step_index() - 1, sim.time(), sim.dt(), sim.snapshot());
   return 0;

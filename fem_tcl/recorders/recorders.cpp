@@ -184,12 +184,11 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
         dofs.push_back(d - 1);
       }
     } else if (!is_node && !is_mesh && args.flag("-ele")) {
-      selected = true;
-      if (args.peek() == "all") {  // OpenSees: every element of the domain
+      if (args.peek() == "all") {  // OpenSees: no selection, so every element of the domain (below)
         args.word("all");
-        for (const auto& [tag, e] : domain.elements()) tags.push_back(tag);
         continue;
       }
+      selected = true;
       auto t = read_integers(args);
       if (t.empty()) args.fail("missing element tags after -ele (tags or all)");
       tags.insert(tags.end(), t.begin(), t.end());
@@ -239,9 +238,8 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
                 << ": no -dof given, so nothing will be written (as OpenSees); add e.g. -dof 1 2\n";
     }
     if (envelope) {
-      RecorderOptions source;  // no file: the envelope writes
-      return std::make_unique<EnvelopeRecorder>(
-          opt, std::make_unique<NodeRecorder>(source, domain, std::move(nodes), std::move(dofs), r, !selected,
+      return std::make_unique<EnvelopeRecorder>(  // the source without a file: the envelope writes
+          opt, std::make_unique<NodeRecorder>(RecorderOptions{}, domain, std::move(nodes), std::move(dofs), r, !selected,
                                               std::move(dof_series)));
     }
     return std::make_unique<NodeRecorder>(opt, domain, std::move(nodes), std::move(dofs), r, !selected,

@@ -1,4 +1,4 @@
-// `eigen <-genBandArpack | -symmBandLapack | -fullGenLapack | -symmBandLapack> numModes` and
+// `eigen <-genBandArpack | -symmBandLapack | -fullGenLapack> numModes` and
 // `nodeEigenvector nodeTag mode <dof>`: OpenSees' eigenvalue analysis of the model as it stands (its
 // current tangent and lumped mass), returning lambda = omega^2 of the numModes lowest modes, as scripts use
 // it for Rayleigh damping (omega_1 = sqrt(lambda_1), a0 = 2 xi w1 w2 / (w1 + w2), ...). The solver flag
