@@ -220,13 +220,19 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   const BoundaryOptionsGiven given{o.left_wall.has_value(), o.right_wall.has_value(), o.base.has_value(), o.deck.base_y.has_value()};
   const std::vector<BoundaryChoice> boundaries = apply_supports(supports, given, deck);
   const TransferState& state = assembled.state;
-  if (const auto bad = inverted_elements(state); !bad.empty()) {
+  auto tag_list = [](const std::vector<long>& tags) {
     std::string list;
-    for (std::size_t i = 0; i < bad.size() && i < 20; ++i) list += (i ? " " : "") + std::to_string(bad[i]);
-    if (bad.size() > 20) list += " ... (" + std::to_string(bad.size()) + " in all)";
+    for (std::size_t i = 0; i < tags.size() && i < 20; ++i) list += (i ? " " : "") + std::to_string(tags[i]);
+    if (tags.size() > 20) list += " ... (" + std::to_string(tags.size()) + " in all)";
+    return list;
+  };
+  if (const auto bad = inverted_elements(state, true); !bad.empty())
+    throw common::InputError(o.model, "elements whose nodes are not counterclockwise around a convex quad in the "
+                                               "model's own coordinates (OpenSees lists a quad's nodes counterclockwise): " +
+                                                   tag_list(bad));
+  if (const auto bad = inverted_elements(state); !bad.empty())
     throw common::InputError(assembled.source_row, "at t = " + fmt(state.time, 9) + " the mesh has elements with non-positive Jacobian "
-                                         "(too distorted to transfer; choose an earlier --time): " + list);
-  }
+                                         "(too distorted to transfer; choose an earlier --time): " + tag_list(bad));
 
   timing.read = lap();
   // 2. Map.

@@ -33,25 +33,68 @@ std::string tag_range_text(const std::vector<long>& tags) {
   return std::to_string(tags.front()) + " .. " + std::to_string(tags.back()) + " (" + std::to_string(tags.size()) + ")";
 }
 
-/// The row to use in `file`: by time when the transfer time is known, else by row number.
-std::size_t pick_row(const RecorderFile& file, std::optional<double> time, std::optional<long> row,
-                     std::vector<std::string>& notes) {
+/// The transfer row of the displacement file, and which of the rows at its time it is: after
+/// `loadConst -time 0` the time restarts, so "t = 0" may name a row of each stage.
+struct TransferRow {
+  std::size_t index = 0;
+  double time = 0;
+  int time_digits = 17;
+  std::size_t occurrence = 0;  ///< among the rows at `time`, 0 the first
+  std::size_t count = 1;       ///< rows at `time`
+};
+
+/// The displacement file's row: by time when the transfer time is given, else by row number, else the last.
+TransferRow pick_transfer_row(const RecorderFile& file, std::optional<double> time, std::optional<long> row,
+                              std::vector<std::string>& notes) {
+  std::size_t index = 0;
   if (time) {
     std::vector<int> lines;
-    const std::size_t r = file.find_time(*time, &lines);
+    index = file.find_time(*time, &lines);
     if (lines.size() > 1) {
       std::string all;
       for (int l : lines) all += (all.empty() ? "" : ", ") + std::to_string(l);
       notes.push_back(file.path().string() + ": time " + fmt(*time) + " appears on lines " + all +
                       " (the time restarts after loadConst -time); using the last, line " +
-                      std::to_string(file.rows()[r].line) + " (choose another with --row)");
+                      std::to_string(file.rows()[index].line) + " (choose another with --row)");
     }
-    return r;
+  } else if (row) {
+    index = file.find_row(*row);
+  } else {
+    index = file.rows().size() - 1;
+    const bool cut = !file.rows()[index].terminated && index > 0;
+    if (cut) --index;
+    notes.push_back("no --time given: using the last " + std::string(cut ? "complete " : "") + "row of " +
+                    file.path().string() + " (line " + std::to_string(file.rows()[index].line) + ", t = " +
+                    fmt(file.rows()[index].time) + ")" + (cut ? "; the row after it was cut while being written" : ""));
   }
-  if (row) return file.find_row(*row);
-  notes.push_back("no --time given: using the last row of " + file.path().string() + " (line " +
-                  std::to_string(file.rows().back().line) + ", t = " + fmt(file.rows().back().time) + ")");
-  return file.rows().size() - 1;
+  TransferRow out;
+  out.index = index;
+  out.time = file.rows()[index].time;
+  out.time_digits = file.time_digits(index);
+  const auto same_time = file.rows_at_time(out.time, out.time_digits);
+  out.count = same_time.size();
+  out.occurrence = static_cast<std::size_t>(std::find(same_time.begin(), same_time.end(), index) - same_time.begin());
+  return out;
+}
+
+/// The row of another recorder of the same analysis at the transfer row: the same time and, when
+/// the time repeats (loadConst -time), the same one of its repeats, so stage-1 displacements never
+/// meet stage-2 stresses.
+std::size_t matching_row(const RecorderFile& file, const RecorderFile& reference, const TransferRow& transfer) {
+  const auto same_time = file.rows_at_time(transfer.time, transfer.time_digits);
+  if (same_time.size() == transfer.count) return same_time[transfer.occurrence];
+  auto lines = [](const RecorderFile& f, const std::vector<std::size_t>& rows) {
+    std::string all;
+    for (std::size_t r : rows) all += (all.empty() ? "" : ", ") + std::to_string(f.rows()[r].line);
+    return all;
+  };
+  throw common::InputError(
+      file.path().string(),
+      "time " + fmt(transfer.time) + " is on line(s) " + lines(file, same_time) + " here but on line(s) " +
+          lines(reference, reference.rows_at_time(transfer.time, transfer.time_digits)) + " of " +
+          reference.path().string() + " (transfer row: line " + std::to_string(reference.rows()[transfer.index].line) +
+          "): the recorders did not record the same steps; record them over the same analyses, or transfer at a "
+          "time that is on one row of each");
 }
 
 /// Copies every value `o` sets into the working values (later overrides win).
@@ -267,8 +310,9 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
                           ") x 2 dofs; give the recorder's node order with --nodes");
   };
   check_node_width(disp, disp.rows().size() - 1);
-  const std::size_t disp_row = pick_row(disp, options.time, options.row, out.notes);
-  const double t = disp.rows()[disp_row].time;
+  const TransferRow transfer = pick_transfer_row(disp, options.time, options.row, out.notes);
+  const std::size_t disp_row = transfer.index;
+  const double t = transfer.time;
   st.time = t;
   out.source_row = disp.where(disp_row);
 
@@ -290,7 +334,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   const auto nodal_field = [&](const std::filesystem::path& file, double scale) {
     const RecorderFile f(file);
     check_node_width(f, f.rows().size() - 1);
-    const auto v = f.values(pick_row(f, t, std::nullopt, out.notes));
+    const auto v = f.values(matching_row(f, disp, transfer));
     std::vector<Vec2> field(nn, Vec2::Zero());
     for (std::size_t k = 0; k < node_tags.size(); ++k)
       field[static_cast<std::size_t>(model.node_index(node_tags[k]))] = scale * Vec2(v[2 * k], v[2 * k + 1]);
@@ -372,7 +416,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
                  : std::string()));
   }
   out.stress_components = comps;
-  const std::size_t stress_row = pick_row(stress, t, std::nullopt, out.notes);
+  const std::size_t stress_row = matching_row(stress, disp, transfer);
   const auto sv = stress.values(stress_row);
   st.gauss_stress.resize(gp_total);
   for (std::size_t e = 0; e < st.elements.size(); ++e) {
@@ -397,7 +441,11 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
 
   // --- gravity and unit sanity
   if (options.gravity) {
-    st.gravity = common::checked_number(*options.gravity, mpm::io::kFiniteRange, "--gravity");
+    // The magnitude: it acts in -y. A negative value (CB-Geo writes the vector [0, -9.81]) would
+    // point it up, which no slope study means.
+    st.gravity = common::checked_number(
+        *options.gravity, common::NumberRange::non_negative().named("the magnitude of gravity in m/s2 (it acts in -y)"),
+        "--gravity");
   } else if (!gravity_samples.empty()) {
     double sum = 0;
     for (double g : gravity_samples) sum += g;

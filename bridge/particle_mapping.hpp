@@ -47,8 +47,9 @@ struct MappingOptions {
 };
 
 /// Tags of the elements whose Jacobian determinant is <= 0 somewhere in the current configuration
-/// (the minimum of the bilinear det J is at a corner).
-std::vector<long> inverted_elements(const TransferState& state);
+/// (the minimum of the bilinear det J is at a corner), or in the model's own coordinates when
+/// `reference` (nodes listed clockwise, or a quad that is not convex).
+std::vector<long> inverted_elements(const TransferState& state, bool reference = false);
 
 /// CB-Geo's Mohr-Coulomb state variables for `stress` (cb-geo/mpm include/materials/mohr_coulomb.tcc,
 /// compute_stress_invariants): phi, psi, cohesion, epsilon = sqrt(3) p (p = I1/3, tension positive),

@@ -79,12 +79,19 @@ RecorderFile::RecorderFile(std::filesystem::path file, bool has_time_column)
     row.terminated = terminated;
     // Count and check tokens; parse the first one as the time.
     int digits = 6;
+    bool cut_number = false;  // a number cut short in an unterminated last row ("1.2e")
     for_each_token(data, pos, eol, [&](const char* begin, const char* end) {
       double v = 0;
-      if (!parse_token(begin, end, v))
+      if (cut_number) return;
+      if (!parse_token(begin, end, v)) {
+        if (!terminated && !rows_.empty()) {
+          cut_number = true;
+          return;
+        }
         throw common::InputError(path_.string() + ":" + std::to_string(line),
                                  "expected a number, got '" + common::printable(std::string(begin, end).substr(0, 40)) + "'" +
                                      (terminated ? "" : " (the file looks truncated)"));
+      }
       if (row.width == 0) {
         if (has_time_ && !std::isfinite(v))
           throw common::InputError(path_.string() + ":" + std::to_string(line),
@@ -100,8 +107,13 @@ RecorderFile::RecorderFile(std::filesystem::path file, bool has_time_column)
         throw common::InputError(path_.string() + ":" + std::to_string(line), "empty line inside the recorder file");
       continue;  // trailing blank line
     }
-    if (!rows_.empty() && row.width != rows_.front().width) {
+    if (!rows_.empty() && (cut_number || row.width != rows_.front().width)) {
       const bool last = pos >= size;
+      if (last && !terminated) {  // cut while being written: the rows before it stay usable
+        rows_.push_back(row);
+        time_digits_.push_back(digits);
+        break;
+      }
       throw common::InputError(
           path_.string() + ":" + std::to_string(line),
           std::to_string(row.width) + " values in this row, but " + std::to_string(rows_.front().width) +
@@ -115,20 +127,19 @@ RecorderFile::RecorderFile(std::filesystem::path file, bool has_time_column)
     throw common::InputError(path_.string() + ":1", "expected a time column and at least one value (recorder with -time)");
 }
 
-std::size_t RecorderFile::find_time(double t, std::vector<int>* ambiguous) const {
+int RecorderFile::time_digits(std::size_t index) const { return std::min(std::max(time_digits_.at(index), 6), 17); }
+
+std::vector<std::size_t> RecorderFile::rows_at_time(double t, int t_digits) const {
   if (!has_time_) throw common::InputError(path_.string(), "--time needs recorder files written with -time; use --row");
-  std::optional<std::size_t> found;
+  std::vector<std::size_t> found;
   for (std::size_t r = 0; r < rows_.size(); ++r) {
     const double tr = rows_[r].time;
-    const int digits = std::min(time_digits_[r] > 6 ? time_digits_[r] : 6, 17);
+    const int digits = std::min(time_digits(r), std::max(t_digits, 6));
     const double magnitude = std::max(std::abs(tr), std::abs(t));
     const double tol = magnitude > 0 ? 0.5 * std::pow(10.0, std::floor(std::log10(magnitude)) - digits + 1) : 0;
-    if (std::abs(tr - t) <= tol * (1 + 1e-9) + 1e-300) {
-      if (ambiguous) ambiguous->push_back(rows_[r].line);
-      found = r;
-    }
+    if (std::abs(tr - t) <= tol * (1 + 1e-9) + 1e-300) found.push_back(r);
   }
-  if (found) return *found;
+  if (!found.empty()) return found;
   // Nearest times below and above, for the message.
   std::optional<std::size_t> below, above;
   for (std::size_t r = 0; r < rows_.size(); ++r) {
@@ -143,6 +154,13 @@ std::size_t RecorderFile::find_time(double t, std::vector<int>* ambiguous) const
   throw common::InputError(path_.string(), "no row at time " + time_text(t) + "; nearest times: " + nearest + "; " +
                                                std::to_string(rows_.size()) + " rows from t = " +
                                                time_text(rows_.front().time) + " to " + time_text(rows_.back().time));
+}
+
+std::size_t RecorderFile::find_time(double t, std::vector<int>* ambiguous) const {
+  const auto found = rows_at_time(t);
+  if (ambiguous)
+    for (std::size_t r : found) ambiguous->push_back(rows_[r].line);
+  return found.back();
 }
 
 std::size_t RecorderFile::find_row(long n) const {

@@ -23,8 +23,9 @@ class RecorderFile {
   };
 
   /// Reads and indexes `file`. Throws common::InputError "<file>:<line>: ..." when the file is
-  /// missing or empty, a value is not a number, or rows differ in width (the last row being short
-  /// is reported as a truncated file).
+  /// missing or empty, a value is not a number, or rows differ in width. A last row without its
+  /// newline (the file was cut while being written) is kept, unterminated, so the rows before it
+  /// stay usable; values() refuses it.
   explicit RecorderFile(std::filesystem::path file, bool has_time_column = true);
 
   const std::filesystem::path& path() const { return path_; }
@@ -35,10 +36,13 @@ class RecorderFile {
   /// Values per row without the time column.
   std::size_t data_width() const { return width() - (has_time_ ? 1 : 0); }
 
-  /// Index of the row whose time equals `t` within the printed precision (6 significant digits or
-  /// the row's own, whichever is coarser). When several rows match (e.g. after `loadConst -time 0`)
-  /// the last one is taken and `ambiguous` (if given) receives the lines of all matches. Throws
-  /// InputError listing the nearest times when no row matches.
+  /// Indices of every row whose time equals `t` within the printed precision: the row's own digits
+  /// (at least 6), or `t_digits` when `t` was itself read from a recorder printed with fewer, whichever
+  /// is coarser. Several rows match after `loadConst -time 0` (the time restarts). Throws InputError
+  /// listing the nearest times when no row matches.
+  std::vector<std::size_t> rows_at_time(double t, int t_digits = 17) const;
+
+  /// The last of rows_at_time(t); `ambiguous` (if given) receives the lines of all matches.
   std::size_t find_time(double t, std::vector<int>* ambiguous = nullptr) const;
 
   /// Index of row `n` (1-based; negative counts from the end: -1 is the last row). Throws InputError.
@@ -46,6 +50,10 @@ class RecorderFile {
 
   /// The values of row `index`, time column excluded.
   std::vector<double> values(std::size_t index) const;
+
+  /// Significant digits printed in the time of row `index` (at least 6: a recorder prints 6 unless
+  /// `-precision` says otherwise, and "0.5" stands for 0.500000).
+  int time_digits(std::size_t index) const;
 
   /// "<file>:<line>" of row `index`, for messages.
   std::string where(std::size_t index) const;

@@ -230,7 +230,21 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
   // Truncated stress file: the last row is cut mid-way.
   const std::string text = slurp(kCase / "stress.out");
   std::ofstream(dir / "cut.out") << text.substr(0, text.size() - 100);
-  expect_clean_failure(model + disp + " --stress " + (dir / "cut.out").string(), dir, {"cut.out:5", "truncated"});
+  expect_clean_failure(model + disp + " --stress " + (dir / "cut.out").string(), dir, {"cut.out:5", "cut while"});
+  // ... but an earlier time of it is still usable (the cut row is not read).
+  EXPECT_EQ(run(model + disp + " --stress " + (dir / "cut.out").string() + " --time 0.8 --out " + (dir / "early").string(), dir).code, 0);
+  // Gravity is a magnitude acting in -y: CB-Geo's -9.81 would point it up.
+  expect_clean_failure(model + disp + stress + " --gravity -9.81", dir, {"--gravity", "acts in -y", "-9.81"});
+  // Element 1 listed clockwise in the model: named as such, not as "too distorted".
+  {
+    std::string json = slurp(kCase / "model.json");
+    const std::string ccw = "\"nodes\": [1, 2, 9, 8]";
+    ASSERT_NE(json.find(ccw), std::string::npos);
+    json.replace(json.find(ccw), ccw.size(), "\"nodes\": [1, 8, 9, 2]");
+    std::ofstream(dir / "clockwise.json") << json;
+  }
+  expect_clean_failure(" --units kN --model " + (dir / "clockwise.json").string() + disp + stress, dir,
+                       {"clockwise.json", "not counterclockwise", ": 1"});
   // Row width disagreeing with the model layout.
   expect_clean_failure(model + disp + stress + " --nodes 1-30", dir, {"disp.out:5", "35 nodes", "--nodes"});
   // A time not in the file: the nearest times are listed.

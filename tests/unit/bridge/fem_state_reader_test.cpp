@@ -150,6 +150,17 @@ TEST(FemStateReader, ReadsQuadFourGaussPointStresses) {
   EXPECT_CLOSE(a.state.displacement[5].y(), u[11], 0, 0);  // node 6, 12 significant digits
   EXPECT_CLOSE(a.state.elements[0].density, 2400, 0, 1e-15);
   EXPECT_CLOSE(a.state.gauss_stress[6][2], 0.2 * 1000 * (s[18] + s[19]), 1e-9, 1e-14);  // plane-strain default
+  // --row 10 is the stage-1 row at t = 0.5: the stresses come from the stage-1 row too (line 10),
+  // not from the last row at that time.
+  o.time.reset();
+  o.row = 10;
+  const auto stage1 = bridge::read_fem_state(model, o);
+  const auto s1 = stress.values(9);
+  EXPECT_CLOSE(stage1.state.gauss_stress[6][0], 1000 * s1[18], 0, 1e-15);
+  EXPECT_NE(s1[18], s[18]);
+  EXPECT_CLOSE(stage1.state.displacement[5].y(), disp.values(9)[11], 0, 0);
+  o.row.reset();
+  o.time = 0.5;
   // The case is PlaneStress: --plane-stress gives szz = 0.
   o.plane_stress = true;
   EXPECT_EQ(bridge::read_fem_state(model, o).state.gauss_stress[6][2], 0.0);

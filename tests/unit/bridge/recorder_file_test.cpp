@@ -60,13 +60,30 @@ TEST(RecorderFile, DuplicateTimesTakeTheLastRow) {
   EXPECT_EQ(f.values(2), (std::vector<double>{5, 6}));
 }
 
+TEST(RecorderFile, TimesOfACoarserRecorderMatchAFinerOne) {
+  // A -precision 10 file and a default (6 digit) one of the same steps: each finds the other's time.
+  const bridge::RecorderFile fine(scratch("fine.out", "0.0123456789 1\n0.0246913578 2\n"));
+  const bridge::RecorderFile coarse(scratch("coarse.out", "0.0123457 1\n0.0246914 2\n"));
+  EXPECT_EQ(coarse.rows_at_time(fine.rows()[1].time, fine.time_digits(1)), (std::vector<std::size_t>{1}));
+  EXPECT_EQ(fine.rows_at_time(coarse.rows()[1].time, coarse.time_digits(1)), (std::vector<std::size_t>{1}));
+  EXPECT_EQ(coarse.time_digits(0), 6);
+  EXPECT_EQ(fine.time_digits(0), 9);
+  EXPECT_FALSE(input_error_message([&] { fine.rows_at_time(coarse.rows()[1].time); }).empty());  // exact query
+}
+
 TEST(RecorderFile, TruncatedAndBadFilesNameFileAndLine) {
   std::ifstream in(kCase / "disp.out");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto cut = scratch("cut.out", text.substr(0, text.size() - 200));  // last row cut mid-way
-  std::string msg = input_error_message([&] { bridge::RecorderFile f(cut); });
+  // The last row cut mid-way (mid-number too): the rows before it stay usable, the cut one is refused.
+  const bridge::RecorderFile cut(scratch("cut.out", text.substr(0, text.size() - 203)));
+  ASSERT_EQ(cut.rows().size(), 5u);
+  EXPECT_FALSE(cut.rows()[4].terminated);
+  EXPECT_EQ(cut.values(3).size(), 70u);
+  std::string msg = input_error_message([&] { cut.values(4); });
   EXPECT_NE(msg.find("cut.out:5"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cut while it was being written"), std::string::npos) << msg;
+  msg = input_error_message([&] { bridge::RecorderFile f(scratch("mid.out", "0.1 1 2\n0.2 1\n0.3 1 2\n")); });
+  EXPECT_NE(msg.find("mid.out:2"), std::string::npos) << msg;  // a short row inside the file is an error
   const auto bad = scratch("bad.out", "0.1 1 2\n0.2 1 x\n");
   msg = input_error_message([&] { bridge::RecorderFile f(bad); });
   EXPECT_NE(msg.find("bad.out:2"), std::string::npos) << msg;
