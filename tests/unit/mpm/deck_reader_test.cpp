@@ -111,6 +111,22 @@ TEST(DeckReader, ReadsTheSmallDeck) {
   EXPECT_EQ(deck.first_step, 0);
 }
 
+// CB-Geo's pressure_smoothing smooths the pressure of its fluid materials only (particle.tcc
+// map_pressure_to_nodes needs a "pressure" state variable): true is read, with a warning naming the key.
+TEST(DeckReader, PressureSmoothingIsAcceptedWithAWarning) {
+  SmallDeck d("pressure_smoothing");
+  EXPECT_TRUE(d.read().warnings.empty());
+  d.deck["analysis"]["pressure_smoothing"] = false;
+  EXPECT_TRUE(d.read().warnings.empty());
+  d.deck["analysis"]["pressure_smoothing"] = true;
+  const auto warnings = d.read().warnings;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_MESSAGE_HAS(warnings[0], "analysis.pressure_smoothing");
+  EXPECT_MESSAGE_HAS(warnings[0], "stress_smoothing");
+  d.deck["analysis"]["pressure_smoothing"] = "yes";
+  EXPECT_MESSAGE_HAS(d.error(), "analysis.pressure_smoothing");
+}
+
 TEST(DeckReader, MapsFileNodeIdsToLatticeIndices) {
   // The same mesh with the nodes listed in reverse order: file node n is lattice node 19 - n.
   SmallDeck d("reversed");
