@@ -244,6 +244,9 @@ void add_element(FemModel& model, const json& j, const std::string& where_text) 
     e.kind = ElementKind::SSPquad;
   } else if (type == "FourNodeQuad" || type == "quad") {
     e.kind = ElementKind::Quad;
+  } else if (type == "Tri31") {
+    throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": Tri31 (a triangle) is not mapped to "
+                                         "particles yet; mesh the soil that is handed over with quads (SSPquad or quad)");
   } else {
     throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": unsupported element type '" + type +
                                              "' (expected SSPquad or FourNodeQuad/quad)");

@@ -1,9 +1,10 @@
 #pragma once
 // The 2-dof-per-node element protocol (OpenSees Element, in this project's style): trial / commit /
 // revert, tangent, initial stiffness, damping tangent, lumped mass, resisting force, element loads and
-// Rayleigh damping. Up to 4 nodes: continuum quads use all 4 (counter-clockwise), two-node elements
-// (zeroLength) the first 2, and their matrices and vectors fill the leading 2 x num_nodes() dofs of the
-// fixed 8-dof storage (the rest stays zero). Dof order (u1x u1y u2x u2y u3x u3y u4x u4y).
+// Rayleigh damping. Up to 4 nodes: continuum quads use all 4 (counter-clockwise), triangles (Tri31) the
+// first 3, two-node elements (zeroLength) the first 2, and their matrices and vectors fill the leading
+// 2 x num_nodes() dofs of the fixed 8-dof storage (the rest stays zero). Dof order (u1x u1y u2x u2y u3x
+// u3y u4x u4y).
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
@@ -42,14 +43,16 @@ class Element {
   Element(int tag, std::array<Node*, 4> nodes) : tag_(tag), nodes_(nodes) {}
   /// A two-node element (the last two node slots stay empty).
   Element(int tag, Node* i, Node* j) : tag_(tag), nodes_{i, j, nullptr, nullptr}, num_nodes_(2) {}
+  /// A three-node element (the last node slot stays empty).
+  Element(int tag, Node* i, Node* j, Node* k) : tag_(tag), nodes_{i, j, k, nullptr}, num_nodes_(3) {}
   virtual ~Element() = default;
 
   int tag() const { return tag_; }
   /// The node slots; only the first num_nodes() are set.
   const std::array<Node*, 4>& nodes() const { return nodes_; }
   int num_nodes() const { return num_nodes_; }
-  /// A 4-node continuum element (mesh-quality measures apply), as opposed to a zero-length spring.
-  bool is_continuum() const { return num_nodes_ == 4; }
+  /// A continuum element, quad or triangle (mesh-quality measures apply), as opposed to a zero-length spring.
+  bool is_continuum() const { return num_nodes_ >= 3; }
   virtual std::string type_name() const = 0;
 
   /// Sets the materials' trial strains from the nodes' trial displacements.
@@ -120,27 +123,31 @@ class Element {
   virtual int material_tag() const = 0;
   virtual nlohmann::ordered_json to_json() const = 0;
 
-  /// Minimum over the four corners of the bilinear map's Jacobian determinant in the current configuration
-  /// (coordinates + trial displacements): det J at corner a = 1/4 (x_{a+1} - x_a) x (x_{a-1} - x_a).
+  /// Minimum over the corners of the element map's Jacobian determinant in the current configuration
+  /// (coordinates + trial displacements): at corner a, (x_{a+1} - x_a) x (x_{a-1} - x_a), times 1/4 for
+  /// the bilinear quad (natural coordinates in [-1, 1]); a triangle's is twice its area at every corner.
   /// Non-positive means the element is inverted or degenerate (mesh distortion monitor).
   double min_corner_jacobian() const {
+    const int n = num_nodes_;
+    const double scale = n == 4 ? 0.25 : 1.0;
     double m = 0.0;
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < n; ++a) {
       const Vector2 xa = nodes_[a]->crd + nodes_[a]->disp;
-      const Vector2 e1 = nodes_[(a + 1) % 4]->crd + nodes_[(a + 1) % 4]->disp - xa;
-      const Vector2 e2 = nodes_[(a + 3) % 4]->crd + nodes_[(a + 3) % 4]->disp - xa;
-      const double det = 0.25 * (e1[0] * e2[1] - e1[1] * e2[0]);
+      const Vector2 e1 = nodes_[(a + 1) % n]->crd + nodes_[(a + 1) % n]->disp - xa;
+      const Vector2 e2 = nodes_[(a + n - 1) % n]->crd + nodes_[(a + n - 1) % n]->disp - xa;
+      const double det = scale * (e1[0] * e2[1] - e1[1] * e2[0]);
       m = a == 0 ? det : std::min(m, det);
     }
     return m;
   }
 
-  /// Minimum over the four corners of det J(current) / det J(reference configuration): 1 for a rigid motion,
+  /// Minimum over the corners of det J(current) / det J(reference configuration): 1 for a rigid motion,
   /// <= 0 once a corner is inverted. A degenerate reference corner (det J = 0) gives -infinity.
   double min_corner_jacobian_ratio() const {
+    const int n = num_nodes_;
     double m = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      const int b = (a + 1) % 4, c = (a + 3) % 4;
+    for (int a = 0; a < n; ++a) {
+      const int b = (a + 1) % n, c = (a + n - 1) % n;
       const Vector2 r1 = nodes_[b]->crd - nodes_[a]->crd, r2 = nodes_[c]->crd - nodes_[a]->crd;
       const Vector2 e1 = r1 + nodes_[b]->disp - nodes_[a]->disp, e2 = r2 + nodes_[c]->disp - nodes_[a]->disp;
       const double ref = r1[0] * r2[1] - r1[1] * r2[0];

@@ -4,6 +4,7 @@
 
 #include "fem_tcl/elements/four_node_quad.hpp"
 #include "fem_tcl/elements/ssp_quad.hpp"
+#include "fem_tcl/elements/tri31.hpp"
 #include "fem_tcl/elements/zero_length.hpp"
 
 namespace fem::elements {
@@ -18,10 +19,14 @@ constexpr std::array kParsers{
     ElementParserEntry{"FourNodeQuad",
                        "element FourNodeQuad tag i j k l thick PlaneStrain|PlaneStress matTag <p rho b1 b2>",
                        parse_four_node_quad},
+    ElementParserEntry{"tri31", "element tri31 tag i j k thick PlaneStrain|PlaneStress matTag <pressure rho b1 b2>",
+                       parse_tri31, 3},
+    ElementParserEntry{"Tri31", "element Tri31 tag i j k thick PlaneStrain|PlaneStress matTag <pressure rho b1 b2>",
+                       parse_tri31, 3},
     ElementParserEntry{"zeroLength",
                        "element zeroLength tag iNode jNode -mat m1 .. -dir d1 .. <-orient x1 x2 x3 <yp1 yp2 yp3>> "
                        "<-doRayleigh <0|1>>",
-                       parse_zero_length},
+                       parse_zero_length, 2},
 };
 }  // namespace
 

@@ -35,6 +35,7 @@ struct ElementParserEntry {
   std::string_view type;
   std::string_view usage;
   ElementParser parse;
+  int nodes = 4;  ///< nodes per element (block2D builds 4-node ones)
 };
 
 std::span<const ElementParserEntry> element_parsers();

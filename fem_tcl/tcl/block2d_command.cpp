@@ -100,10 +100,13 @@ std::string cmd_block2d(Context& ctx, common::CommandArgs& args) {
               std::to_string(start_node + nodes - 1) + ", elements " + std::to_string(start_ele) + "-" +
               std::to_string(start_ele + elements - 1) + ")");
   }
-  if (!elements::find_element_parser(type)) {
+  // block2D makes 4-node elements here (-numEleNodes 9 is refused above).
+  if (const auto* entry = elements::find_element_parser(type); !entry || entry->nodes != 4) {
     std::string known;
-    for (const auto& e : elements::element_parsers()) known += (known.empty() ? "" : ", ") + std::string(e.type);
-    args.fail("unknown element type '" + type + "' (known: " + known + ")");
+    for (const auto& e : elements::element_parsers())
+      if (e.nodes == 4) known += (known.empty() ? "" : ", ") + std::string(e.type);
+    args.fail((entry ? "element type '" + type + "' has " + std::to_string(entry->nodes) + " nodes; block2D makes 4-node elements"
+                     : "unknown element type '" + type + "'") + " (4-node types: " + known + ")");
   }
   const elements::Block2dPoints points = parse_points(ctx, args, point_list);
   if (const auto bad = elements::block2d_invalid_corners(points)) args.fail(*bad);

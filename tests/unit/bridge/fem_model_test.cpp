@@ -79,6 +79,7 @@ TEST(FemModel, RejectsUnsupportedElementAndUnknownNode) {
   } catch (const common::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("m.json"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("Tri31"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mesh the soil that is handed over with quads"), std::string::npos) << e.what();
   }
   const std::string bad_node = R"({"StructuralAnalysisModel": {"geometry": {
     "nodes": [{"name": 1, "crd": [0, 0]}],

@@ -1,12 +1,15 @@
-// Unit tests: ElasticIsotropic, SSPquad, FourNodeQuad (one class each; properties any correct
+// Unit tests: ElasticIsotropic, SSPquad, FourNodeQuad, Tri31 (one class each; properties any correct
 // implementation must have: rigid-body modes, symmetry, mass and load totals, rejected geometry).
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
 
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/elements/four_node_quad.hpp"
 #include "fem_tcl/elements/ssp_quad.hpp"
+#include "fem_tcl/elements/tri31.hpp"
 #include "fem_tcl/materials/elastic_isotropic.hpp"
 #include "support/tolerance.hpp"
 
@@ -175,6 +178,89 @@ TEST(FourNodeQuad, StiffnessMassAndResponses) {
 TEST(FourNodeQuad, RejectsClockwiseNodes) {
   QuadFixture f(true);
   EXPECT_THROW(fem::elements::FourNodeQuad(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0, 0, 0, 0),
+               common::InputError);
+}
+
+struct TriangleFixture {
+  Domain domain;
+  std::array<fem::domain::Node*, 3> nodes{};
+  ElasticIsotropic material{1, 1000.0, 0.25, 2.0};
+  explicit TriangleFixture(bool clockwise = false) {
+    const double x[3] = {0.0, 2.0, 0.5}, y[3] = {0.0, 0.3, 1.5};
+    for (int i = 0; i < 3; ++i) {
+      const int k = clockwise ? 2 - i : i;
+      nodes[i] = &domain.add_node(i + 1, x[k], y[k], "test");
+    }
+  }
+  double area() const { return 0.5 * (2.0 * 1.5 - 0.5 * 0.3); }
+};
+
+// The constant-strain triangle: 3 rigid-body modes and 3 deformation modes in its 6 dofs (the 2 padding dofs
+// of the 8-dof storage stay zero), a third of the mass at each node, the body force a third at each node, and
+// OpenSees' surface pressure (consistent nodal loads p/2 (dy, -dx) at both ends of each side, subtracted from
+// the resisting force): on a free triangle it is an isotropic stress p in the plane.
+TEST(Tri31, StiffnessMassBodyForceAndPressure) {
+  TriangleFixture f;
+  fem::elements::Tri31 e(1, f.nodes, f.material, PlaneType::PlaneStress, 0.5, 0.0, 0.0, 0.0, -10.0);
+  const Matrix8 K = e.tangent_stiffness();
+  EXPECT_LT((K - K.transpose()).norm(), 1e-12 * K.norm());
+  EXPECT_EQ(K.rightCols(2).norm(), 0.0);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(K.topLeftCorner(6, 6));
+  for (int i = 0; i < 3; ++i) EXPECT_LT(std::abs(eig.eigenvalues()[i]), 1e-10 * eig.eigenvalues()[5]);
+  EXPECT_GT(eig.eigenvalues()[3], 1e-6 * eig.eigenvalues()[5]);
+  const Vector8 m = e.lumped_mass();
+  for (int a = 0; a < 3; ++a) EXPECT_CLOSE(m[2 * a], 2.0 * f.area() * 0.5 / 3.0, 1e-12, 1e-12);
+  e.update();
+  const Vector8 r = e.resisting_force();  // zero displacement: minus the body force
+  for (int a = 0; a < 3; ++a) EXPECT_CLOSE(r[2 * a + 1], 10.0 * f.area() * 0.5 / 3.0, 1e-12, 1e-12);
+  EXPECT_EQ(e.response({"stresses"})->size(), 3u);
+  EXPECT_EQ(e.response({"strains"})->size(), 3u);
+  EXPECT_EQ(e.response({"forces"})->size(), 6u);
+  EXPECT_EQ(e.response({"stressAtNodes"})->size(), 9u);
+  EXPECT_EQ(e.response({"material", "1", "stress"})->size(), 3u);
+  EXPECT_FALSE(e.response({"material", "2", "stress"}).has_value());
+  EXPECT_EQ(e.to_json()["type"], "Tri31");
+  EXPECT_EQ(e.to_json()["nodes"].size(), 3u);
+
+  // The pressure: solve K u = -(resisting force at u = 0) on the free triangle, held statically determinate.
+  fem::elements::Tri31 pressed(2, f.nodes, f.material, PlaneType::PlaneStress, 1.0, 10.0, 0.0, 0.0, 0.0);
+  pressed.update();
+  const Vector8 load = -pressed.resisting_force();
+  EXPECT_GT(load.norm(), 0.0);
+  EXPECT_LT(std::abs(load[0] + load[2] + load[4]) + std::abs(load[1] + load[3] + load[5]), 1e-12 * load.norm());
+  const std::array<int, 3> fixed{0, 1, 3};  // node 1 x y, node 2 y
+  std::vector<int> free;
+  for (int i = 0; i < 6; ++i)
+    if (std::find(fixed.begin(), fixed.end(), i) == fixed.end()) free.push_back(i);
+  Eigen::Matrix3d Kf;
+  Eigen::Vector3d lf;
+  const Matrix8 Kp = pressed.tangent_stiffness();
+  for (int i = 0; i < 3; ++i) {
+    lf[i] = load[free[static_cast<std::size_t>(i)]];
+    for (int j = 0; j < 3; ++j) Kf(i, j) = Kp(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
+  }
+  const Eigen::Vector3d uf = Kf.lu().solve(lf);
+  for (int i = 0; i < 3; ++i) {
+    const int dof = free[static_cast<std::size_t>(i)];
+    f.nodes[static_cast<std::size_t>(dof / 2)]->disp[dof % 2] = uf[i];
+  }
+  pressed.update();
+  const auto s = *pressed.response({"stress"});
+  EXPECT_CLOSE(s[0], 10.0, 1e-12, 1e-12);
+  EXPECT_CLOSE(s[1], 10.0, 1e-12, 1e-12);
+  EXPECT_CLOSE(s[2], 0.0, 1e-12, 0.0);
+}
+
+TEST(Tri31, RejectsClockwiseOrCollapsedNodes) {
+  TriangleFixture f(true);
+  EXPECT_THROW(fem::elements::Tri31(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0, 0, 0, 0),
+               common::InputError);
+  TriangleFixture g;
+  g.nodes[2] = g.nodes[1];
+  EXPECT_THROW(fem::elements::Tri31(1, g.nodes, g.material, PlaneType::PlaneStrain, 1.0, 0, 0, 0, 0),
+               common::InputError);
+  TriangleFixture h;
+  EXPECT_THROW(fem::elements::Tri31(1, h.nodes, h.material, PlaneType::PlaneStrain, 0.0, 0, 0, 0, 0),
                common::InputError);
 }
 

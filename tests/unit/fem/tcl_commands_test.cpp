@@ -98,6 +98,12 @@ TEST(TclCommands, ClockwiseAndCollapsedElementsAreRejected) {
   EXPECT_NE(cw.find("usage:"), std::string::npos) << cw;
   EXPECT_NE(error_of(interp, "element quad 3 1 4 5 2 1.0 PlaneStrain 1").find("clockwise"), std::string::npos);
   EXPECT_NE(error_of(interp, "element quad 3 1 2 2 4 1.0 PlaneStrain 1").find("collapsed"), std::string::npos);
+  EXPECT_NE(error_of(interp, "element tri31 3 1 4 2 1.0 PlaneStrain 1").find("clockwise"), std::string::npos);
+  EXPECT_NE(error_of(interp, "element tri31 3 1 2 2 1.0 PlaneStrain 1").find("collapsed"), std::string::npos);
+  // OpenSees reads tri31's optional block only when all four values are given; two of them are an error here
+  const std::string partial = error_of(interp, "element tri31 3 1 2 5 1.0 PlaneStrain 1 0.0 2.0");
+  EXPECT_NE(partial.find("element tri31 3"), std::string::npos) << partial;
+  EXPECT_NE(partial.find("pressure rho b1 b2, all four"), std::string::npos) << partial;
   // the failed commands left no element behind
   std::string message;
   ASSERT_TRUE(interp.eval_script("set tags [getEleTags]", "test", message)) << message;

@@ -51,7 +51,7 @@ if {[analyze 1] != 0} { error "patch analysis failed" }
 )tcl";
 }
 
-void expect_patch_passed(fem::tcl::Interpreter& interp, int values_per_element) {
+void expect_patch_passed(fem::tcl::Interpreter& interp, int values_per_element, int elements = 5) {
   auto& domain = interp.context().domain;
   for (int n = 5; n <= 8; ++n) {
     const auto& node = *domain.find_node(n);
@@ -61,7 +61,7 @@ void expect_patch_passed(fem::tcl::Interpreter& interp, int values_per_element) 
   }
   const double c = 1e6 / (1.0 - 0.25 * 0.25);
   const double sxx = c * (1e-3 + 0.25 * 1e-3), sxy = 1e6 / (2.0 * 1.25) * 1e-3;
-  for (int e = 1; e <= 5; ++e) {
+  for (int e = 1; e <= elements; ++e) {
     const auto s = fem_verification::element_response(interp, e, "stress");
     ASSERT_EQ(static_cast<int>(s.size()), values_per_element);
     for (int k = 0; k < values_per_element; k += 3) {
@@ -82,6 +82,14 @@ TEST(PatchTest, FourNodeQuadReproducesConstantStrainOnADistortedMesh) {
   fem::tcl::Interpreter interp;
   run(interp, patch_script("element quad $tag $i $j $k $l 0.001 PlaneStress 1"));
   expect_patch_passed(interp, 12);
+}
+
+// Each quad of the patch cut into two triangles (i j k) and (i k l): the constant-strain triangle is exact here.
+TEST(PatchTest, Tri31ReproducesConstantStrainOnADistortedMesh) {
+  fem::tcl::Interpreter interp;
+  run(interp, patch_script("element tri31 [expr {2*$tag - 1}] $i $j $k 0.001 PlaneStress 1; "
+                           "element tri31 [expr {2*$tag}] $i $k $l 0.001 PlaneStress 1"));
+  expect_patch_passed(interp, 3, 10);
 }
 
 }  // namespace
