@@ -54,6 +54,7 @@ struct CliOptions {
   double ground_motion_factor = 1.0;
   int ground_motion_dir = 1;
   bool quiet = false;
+  bool check_options = false;
   bool plane_stress = false;
 };
 
@@ -163,7 +164,10 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (o.units == "SI") ro.units = Units::SI;
   else if (o.units == "kN") ro.units = Units::kN;
   else throw common::InputError("--units", "expected SI or kN, got '" + o.units + "'");
-  if (!o.material_type.empty()) ro.material.type = o.material_type;
+  if (!o.material_type.empty()) {
+    check_material_type(o.material_type, "--material-type");
+    ro.material.type = o.material_type;
+  }
   ro.material.E = o.E;
   ro.material.nu = o.nu;
   ro.material.density = o.density;
@@ -213,6 +217,11 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (!o.loads.empty() && deck.ground_motion)
     throw common::InputError("--loads", "not with --ground-motion: OpenSees' unbalance holds UniformExcitation's inertia "
                                         "load -M a_g besides the patterns' loads, which cannot be told apart");
+  check_deck_options(deck);
+  if (o.check_options) {
+    out << "fem2mpm: the options are valid (the FEM files were not read)\n";
+    return 0;
+  }
   // 1. Read and check everything (no output yet).
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
@@ -425,6 +434,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--ground-motion-dt", o.ground_motion_dt, "time step of the record, s (Path -dt; required with --ground-motion)")->group("Ground motion");
   app.add_option("--ground-motion-factor", o.ground_motion_factor, "factor on the record (Path -factor, e.g. 9.81 for a record in g)")->capture_default_str()->group("Ground motion");
   app.add_option("--ground-motion-dir", o.ground_motion_dir, "direction (UniformExcitation dir): 1 = x, 2 = y")->capture_default_str()->group("Ground motion");
+  app.add_flag("--check-options", o.check_options,
+               "check the options (and the --ground-motion record) and stop, before reading the FEM files: "
+               "a driver runs this before the FEM analysis")->group("Inputs");
   app.add_flag("--quiet", o.quiet, "print nothing on success (the report is still written to report.json)");
   app.footer("Exit status: 0 done; 2 bad input (one line naming the option, file, line or key; nothing written); "
              "1 an output could not be written (disk full, permissions); an output target that exists and is not a regular "

@@ -166,8 +166,7 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
                               : (fem ? " (type '" + fem->type + "' has no MPM counterpart: give --material-type and its parameters)"
                                      : " (not in properties.ndMaterials: give --material-type and its parameters)");
   if (type.empty()) throw common::InputError(src, "unknown material" + why);
-  if (type != "elastic" && type != "mohr-coulomb")
-    throw common::InputError("--material-type", "expected elastic or mohr-coulomb, got '" + type + "'");
+  check_material_type(type, "--material-type");
   auto need = [&](const std::optional<double>& v, const char* what, const char* option) {
     if (!v) throw common::InputError(src, std::string("no ") + what + "; give " + option + why);
     return *v;
@@ -205,6 +204,11 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
 
 }  // namespace
 
+void check_material_type(const std::string& type, const std::string& where, const std::string& key_prefix) {
+  if (type != "elastic" && type != "mohr-coulomb")
+    throw common::InputError(where, key_prefix + "expected elastic or mohr-coulomb, got '" + type + "'");
+}
+
 void parse_material_override(const std::string& text, const std::string& option,
                              std::map<std::string, MaterialOverrides>& into) {
   const auto colon = text.find(':');
@@ -219,8 +223,7 @@ void parse_material_override(const std::string& text, const std::string& option,
     const std::string where = option + " " + text;
     if (eq == std::string::npos || value.empty()) throw common::InputError(where, "expected key=value, got '" + item + "'");
     if (key == "type") {
-      if (value != "elastic" && value != "mohr-coulomb")
-        throw common::InputError(where, "type: expected elastic or mohr-coulomb, got '" + value + "'");
+      check_material_type(value, where, "type: ");
       o.type = value;
       continue;
     }

@@ -55,6 +55,9 @@ struct AssembledState {
 /// Throws common::InputError naming the file and line (or option) on any inconsistency.
 AssembledState read_fem_state(const FemModel& model, const ReadOptions& options);
 
+/// Throws InputError("<where>: [type: ]expected elastic or mohr-coulomb, got ...") unless `type` is one of them.
+void check_material_type(const std::string& type, const std::string& where, const std::string& key_prefix = "");
+
 /// Parses one `--material NAME:key=value[,key=value...]` (keys type, E, nu, density, phi, cohesion or c, psi,
 /// tension; values in the FEM units, angles in degrees) into `into[NAME]`. Throws InputError naming `option`.
 void parse_material_override(const std::string& text, const std::string& option,

@@ -119,11 +119,8 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
     g.nx = static_cast<int>(nx);
     g.ny = static_cast<int>(ny);
   };
-  if (options.extent) {
+  if (options.extent) {  // finite and ordered (check_deck_options)
     const auto& ext = *options.extent;
-    for (double v : ext)
-      if (!std::isfinite(v)) throw common::InputError("--extent", "expected finite numbers, got " + num(v));
-    if (!(ext[1] > ext[0] && ext[3] > ext[2])) throw common::InputError("--extent", "expected xmin < xmax and ymin < ymax");
     g.x0 = ext[0];
     g.y0 = ext[2];
     set_cell_counts(ext[1] - ext[0], ext[3] - ext[2]);
@@ -165,26 +162,50 @@ GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::Partic
   return g;
 }
 
+void check_deck_options(const DeckOptions& options) {
+  if (options.dt) common::checked_number(*options.dt, mpm::io::kTimeStepRange, "--dt");
+  else common::checked_number(options.cfl, common::NumberRange::open_closed(0, 1).named("a Courant number"), "--cfl");
+  if (options.nsteps) {
+    if (*options.nsteps < 1) throw common::InputError("--nsteps", "expected at least 1 step");
+  } else {
+    common::checked_number(options.duration, common::NumberRange::positive(), "--duration");
+  }
+  if (options.output_steps && *options.output_steps < 1) throw common::InputError("--output-steps", "expected at least 1");
+  if (options.step < 0) throw common::InputError("--step", "expected 0 <= step < nsteps");
+  if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
+    throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
+  if (options.base == Base::Friction || options.base == Base::Contact)
+    common::checked_number(options.base_friction, mpm::io::kFrictionCoefficientRange, "--base-friction");
+  common::checked_number(options.damping, mpm::io::kDampingFactorRange, "--damping");
+  if (const auto problem = mpm::io::run_name_problem(options.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
+  if (options.cell_size && !(*options.cell_size > 0 && std::isfinite(*options.cell_size)))
+    throw common::InputError("--cell-size", "expected a cell size > 0 (finite), got " + num(*options.cell_size));
+  if (options.extent) {
+    const auto& ext = *options.extent;
+    for (double v : ext)
+      if (!std::isfinite(v)) throw common::InputError("--extent", "expected finite numbers, got " + num(v));
+    if (!(ext[1] > ext[0] && ext[3] > ext[2])) throw common::InputError("--extent", "expected xmin < xmax and ymin < ymax");
+  }
+}
+
 DeckText plan_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                    const DeckOptions& options) {
+  check_deck_options(options);
   DeckText d;
   const GridSpec g = choose_grid(state, particles, options, &d.warnings);
   d.grid = g;
   if (options.dt) {
-    d.dt = common::checked_number(*options.dt, mpm::io::kTimeStepRange, "--dt");
+    d.dt = *options.dt;
   } else {
     double cmax = 0;
     for (const auto& m : state.materials) cmax = std::max(cmax, p_wave_speed(m));
-    common::checked_number(options.cfl, common::NumberRange::open_closed(0, 1).named("a Courant number"), "--cfl");
     d.dt = options.cfl * g.h / cmax;
     if (!(d.dt > 0) || !std::isfinite(d.dt))
       throw common::InputError("--dt", "the default time step cfl h / c_p is " + num(d.dt) + "; give --dt");
   }
   if (options.nsteps) {
-    if (*options.nsteps < 1) throw common::InputError("--nsteps", "expected at least 1 step");
     d.nsteps = *options.nsteps;
   } else {
-    common::checked_number(options.duration, common::NumberRange::positive(), "--duration");
     const double steps = std::ceil(options.duration / d.dt - 1e-9) + 1;
     if (!(steps <= 1e15))
       throw common::InputError("--duration", num(options.duration) + " s at dt " + num(d.dt) + " s is " + num(steps) +
@@ -195,10 +216,7 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   d.output_steps = options.output_steps ? *options.output_steps
                                         : std::max<long long>(1, static_cast<long long>(std::min(
                                                                      std::round(0.5 / d.dt), static_cast<double>(d.nsteps - 1))));
-  if (d.output_steps < 1) throw common::InputError("--output-steps", "expected at least 1");
-  if (options.step < 0 || options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
-  if (options.scheme != "usf" && options.scheme != "usl" && options.scheme != "musl")
-    throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
+  if (options.step >= d.nsteps) throw common::InputError("--step", "expected 0 <= step < nsteps");
   const double grid_top = g.y0 + g.ny * g.h;
   if (options.base_y && !(*options.base_y >= g.y0 && *options.base_y < grid_top))
     throw common::InputError("--base-y", "expected a height inside the grid [" + num(g.y0) + ", " +
@@ -207,10 +225,6 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   if (options.base_y) d.base_y = *options.base_y;
   else if (support_base && *support_base >= g.y0 && *support_base < grid_top) d.base_y = *support_base;
   else d.base_y = g.y0;
-  if (options.base == Base::Friction || options.base == Base::Contact)
-    common::checked_number(options.base_friction, mpm::io::kFrictionCoefficientRange, "--base-friction");
-  common::checked_number(options.damping, mpm::io::kDampingFactorRange, "--damping");
-  if (const auto problem = mpm::io::run_name_problem(options.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
   d.particle_file = "results/" + options.uuid + "/" + mpm::io::particle_file_name(options.step, d.nsteps);
   if (options.ground_motion) {
     // The transferred state is the MPM state at t = (step + 1) dt (a resumed run's clock).

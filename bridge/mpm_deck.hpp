@@ -95,10 +95,16 @@ struct DeckText {
   MotionTable base_motion;
 };
 
-/// Chooses the grid (throws common::InputError naming the option when a particle lies outside the
-/// requested extent or the sizes are not positive).
+/// Chooses the grid for options that passed check_deck_options (throws common::InputError naming the
+/// option when a particle lies outside the requested extent or the grid is too large).
 GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
                      const DeckOptions& options, std::vector<std::string>* warnings = nullptr);
+
+/// The checks that need the options alone (dt or the Courant number, steps or duration, output steps,
+/// scheme, base friction, damping, run name, extent): run before any file is read, so a bad option fails
+/// at once (`fem2mpm --check-options`, and before a driver's FEM run). Throws common::InputError naming
+/// the option.
+void check_deck_options(const DeckOptions& options);
 
 /// Checks the options and chooses the grid, dt, nsteps, output interval and particle file name
 /// (everything but the text bodies). Throws common::InputError naming the option.

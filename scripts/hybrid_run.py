@@ -329,8 +329,11 @@ def main(argv=None):
     command = [PROG] + argv
     walls = {}
     warnings = []
-    stage = "FEM"
+    stage = "fem2mpm options"
+    fem2mpm_options = list(forward) + ["--duration", repr(args.duration)]
     try:
+        pipeline.check_fem2mpm_options(bins, fem_dir, mpm_dir, args.transfer, fem2mpm_options)
+        stage = "FEM"
         print("%s: FEM: fem_tcl %s %s %s" % (PROG, args.model, fem_dir, " ".join(script_args)), flush=True)
         walls["fem"] = pipeline.run_fem_script(bins, os.path.abspath(args.model), fem_dir, script_args)
         fem_end = metrics.fem_last_time(fem_dir)
@@ -340,8 +343,7 @@ def main(argv=None):
                          % (args.transfer, fem_end, os.path.join(fem_dir, "disp.out"), args.transfer))
         stage = "fem2mpm"
         print("%s: transfer at t = %g s: fem2mpm %s" % (PROG, args.transfer, " ".join(forward)), flush=True)
-        walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, args.transfer,
-                                                list(forward) + ["--duration", repr(args.duration)])
+        walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, args.transfer, fem2mpm_options)
         warnings += repeat_warnings(os.path.join(mpm_dir, "fem2mpm.log"))
         if not option_given(forward, "--output-steps"):
             n_out = max(1, int(round(args.duration / (args.output_every or args.duration / 40.0))))

@@ -98,12 +98,28 @@ def remove_outputs(folder, names):
             os.remove(p)
 
 
+def fem2mpm_command(bins, fem_dir, out, t_transfer, options=()):
+    """The fem2mpm command line on FEM_DIR's contracted files at time t_transfer into OUT."""
+    return [bins["fem2mpm"], "--model", os.path.join(fem_dir, "model.json"), "--disp", os.path.join(fem_dir, "disp.out"),
+            "--vel", os.path.join(fem_dir, "vel.out"), "--stress", os.path.join(fem_dir, "stress.out"),
+            "--time", "%.10g" % t_transfer, "--out", out] + list(options)
+
+
+def check_fem2mpm_options(bins, fem_dir, out, t_transfer, options=()):
+    """fem2mpm --check-options with the options run_fem2mpm will get: a bad option fails before the FEM
+    analysis (raises PipelineError with fem2mpm's one-line message), not after it."""
+    cmd = fem2mpm_command(bins, fem_dir, out, t_transfer, options) + ["--check-options"]
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace")
+    if r.returncode != 0:
+        last = [ln for ln in r.stderr.splitlines() if ln.strip()]
+        raise PipelineError("%s (checked before the FEM run)" % (last[-1] if last else "fem2mpm exit %d" % r.returncode),
+                            bad_input=r.returncode == 2)
+
+
 def run_fem2mpm(bins, fem_dir, out, t_transfer, options=(), logfile=None):
     """fem2mpm on FEM_DIR's contracted files at time t_transfer into OUT (its own options appended).
     Returns wall seconds; the log goes to OUT/fem2mpm.log."""
-    cmd = [bins["fem2mpm"], "--model", os.path.join(fem_dir, "model.json"), "--disp", os.path.join(fem_dir, "disp.out"),
-           "--vel", os.path.join(fem_dir, "vel.out"), "--stress", os.path.join(fem_dir, "stress.out"),
-           "--time", "%.10g" % t_transfer, "--out", out] + list(options)
+    cmd = fem2mpm_command(bins, fem_dir, out, t_transfer, options)
     if os.path.exists(os.path.join(fem_dir, "loads.out")):
         cmd += ["--loads", os.path.join(fem_dir, "loads.out")]
     parent = os.path.dirname(os.path.abspath(out))

@@ -233,6 +233,13 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
   expect_clean_failure(model + disp + " --stress " + (dir / "cut.out").string(), dir, {"cut.out:5", "cut while"});
   // ... but an earlier time of it is still usable (the cut row is not read).
   EXPECT_EQ(run(model + disp + " --stress " + (dir / "cut.out").string() + " --time 0.8 --out " + (dir / "early").string(), dir).code, 0);
+  // --check-options stops after the options, before the files are read (a driver runs it before its FEM run).
+  expect_clean_failure(" --units kN --model nope.json --disp nope.out --stress nope.out --check-options --scheme fast", dir,
+                       {"--scheme", "'fast'"});
+  const Result checked = run(" --units kN --model nope.json --disp nope.out --stress nope.out --check-options --out " +
+                                 (dir / "checked").string(), dir);
+  EXPECT_EQ(checked.code, 0) << checked.err;
+  EXPECT_FALSE(fs::exists(dir / "checked"));
   // Gravity is a magnitude acting in -y: CB-Geo's -9.81 would point it up.
   expect_clean_failure(model + disp + stress + " --gravity -9.81", dir, {"--gravity", "acts in -y", "-9.81"});
   // Element 1 listed clockwise in the model: named as such, not as "too distorted".

@@ -2,7 +2,7 @@
 """scripts/hybrid_run.py on bad input: one line on stderr naming what was expected, exit 2, and no summary
 written. Cases: a missing model; an option without its value; an option the driver sets itself; a script
 that does not write the contracted files (model.json, disp.out, vel.out, stress.out) in its output folder;
-a transfer time after the last recorded row. Each case is a few fem_tcl commands (well under a second). Then one
+a transfer time after the last recorded row; a bad fem2mpm option (found before the FEM run). Each case is a few fem_tcl commands (well under a second). Then one
 run that works, with a warning to repeat and a resume file to rename (below)."""
 import argparse
 import os
@@ -61,6 +61,11 @@ def main():
     case("option set by the driver", [good, "--transfer", "0", "--time", "1"], "--time is set by the driver")
     case("contract not met", [bad, "--transfer", "0"], "did not write disp.out")
     case("transfer after the last row", [good, "--transfer", "1.5"], "recorded only to t = 0 s")
+    # A bad fem2mpm option fails before the FEM run, which would take minutes on a real model: the FEM
+    # folder stays without recorder files.
+    case("bad fem2mpm option", [good, "--transfer", "0", "--cfl", "2"], "--cfl: expected a Courant number in (0, 1], got 2")
+    fem_dir = os.path.join(tmp, "out_bad_fem2mpm_option", "fem")
+    checks.expect("checked before the FEM run", not os.path.exists(os.path.join(fem_dir, "disp.out")), ": %s" % fem_dir)
 
     # A run that works: fem2mpm's warning (the density 2 looks like Mg/m3) repeated on stderr and in
     # summary.md; and with --dt 5 fem2mpm's deck has 1 step, the driver's 41 (40 outputs), so the name of
