@@ -356,7 +356,6 @@ MohrCoulombReturnMap::MohrCoulombReturnMap(const IsotropicElasticity& el, const 
 
 const MohrCoulombSurface& MohrCoulombReturnMap::surface() const { return data_->surface; }
 const IsotropicElasticity& MohrCoulombReturnMap::elasticity() const { return data_->elasticity; }
-bool MohrCoulombReturnMap::tension_active() const { return data_->planes.tension; }
 
 bool MohrCoulombReturnMap::admits(const PlaneStrainStress& trial) const {
   const Data& d = *data_;

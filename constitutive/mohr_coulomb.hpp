@@ -122,8 +122,6 @@ class MohrCoulombReturnMap {
   MohrCoulombUpdate apply_plastic(const PlaneStrainStress& trial_stress) const;
   const MohrCoulombSurface& surface() const;
   const IsotropicElasticity& elasticity() const;
-  /// Whether the tension cutoff is within the surface's reach (admits() tests it only then).
-  bool tension_active() const;
 
  private:
   struct Data;

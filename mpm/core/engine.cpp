@@ -13,7 +13,6 @@
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
 #include "mpm/core/boundary_rules.hpp"
-#include "mpm/core/mohr_coulomb_batch.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/shape_functions.hpp"
 #include "mpm/core/stencil_kernels.hpp"
@@ -753,16 +752,6 @@ struct SameMaterial {
   const Model& model;
   void operator()(std::uint32_t /*material*/, double* s, const double* de, double* sv) const { model.update(s, de, sv); }
   bool separated(std::uint32_t /*material*/, double mass, double volume) const { return model.separated(mass, volume); }
-  /// Four consecutive particles' updates settled at once (bit mask): none but Mohr-Coulomb's elastic ones.
-  unsigned batch(double* /*s*/, const double* /*de*/, const double* /*sv*/) const { return 0; }
-};
-template <>
-struct SameMaterial<MohrCoulomb> {
-  const MohrCoulomb& model;
-  MohrCoulombElasticBatch elastic{model};
-  void operator()(std::uint32_t /*material*/, double* s, const double* de, double* sv) const { model.update(s, de, sv); }
-  bool separated(std::uint32_t /*material*/, double mass, double volume) const { return model.separated(mass, volume); }
-  unsigned batch(double* s, const double* de, const double* sv) const { return elastic.update(s, de, sv, kStateVariables); }
 };
 /// Dispatch for mixed materials: a switch on the material type (no virtual call).
 struct MixedMaterials {
@@ -778,7 +767,6 @@ struct MixedMaterials {
     const Material& m = materials[material];
     return m.type == io::MaterialType::MohrCoulomb2D && m.mohr_coulomb.separated(mass, volume);
   }
-  unsigned batch(double* /*s*/, const double* /*de*/, const double* /*sv*/) const { return 0; }
 };
 }  // namespace
 
@@ -932,23 +920,14 @@ void Engine::update_material_state(std::size_t c) {
 /// the strain sums, and the particle fields carried unchanged, all into the next buffer.
 template <class Dispatch>
 void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch) {
-  constexpr std::size_t kBatch = MohrCoulombElasticBatch::kLanes;
-  unsigned settled = 0;  // bit k % kBatch: the batch settled particle k's update
   for (std::size_t k = k0; k < k1; ++k) {
     const std::uint32_t p = order_[k];
     const double* de = &dstrain_[3 * k];
     double* s = &nxt_.stress[4 * k];  // updated in place (a whole-block copy: no partial-store stalls)
+    copy_doubles<4>(&cur_.stress[4 * p], s);
     double* sv = &nxt_.svars[k * kStateVariables];  // updated in place, as the stress
-    if ((k - k0) % kBatch == 0) {  // the next four particles' stresses and state, and their batch update
-      settled = 0;
-      const std::size_t n = std::min(kBatch, k1 - k);
-      for (std::size_t i = 0; i < n; ++i) {
-        copy_doubles<4>(&cur_.stress[4 * order_[k + i]], s + 4 * i);
-        copy_doubles<kStateVariables>(&cur_.svars[order_[k + i] * kStateVariables], sv + i * kStateVariables);
-      }
-      if (n == kBatch) settled = dispatch.batch(s, de, sv);
-    }
-    if (!((settled >> ((k - k0) % kBatch)) & 1u)) dispatch(cur_.material[p], s, de, sv);
+    copy_doubles<kStateVariables>(&cur_.svars[p * kStateVariables], sv);
+    dispatch(cur_.material[p], s, de, sv);
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
     if (dispatch.separated(cur_.material[p], cur_.mass[p], nxt_.volume[k])) std::fill_n(s, 4, 0.0);

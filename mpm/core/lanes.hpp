@@ -18,10 +18,4 @@ inline Double2 select(Mask2 m, Double2 a, Double2 b) { return m ? a : b; }
 /// Per lane |v| (-0.0 stays -0.0: callers only compare it or use it where the sign of zero is lost).
 inline Double2 abs2(Double2 v) { return select(v < splat2(0.0), -v, v); }
 
-/// Four doubles: the same particle quantity of four particles (one AVX2 register where the CPU variant
-/// has AVX2, two SSE2 registers on the baseline). Used only for locals inside a kernel (never passed or
-/// returned by value, whose ABI would differ between the two builds).
-using Double4 = double __attribute__((vector_size(32)));
-using Mask4 = std::int64_t __attribute__((vector_size(32)));
-
 }  // namespace mpm::core

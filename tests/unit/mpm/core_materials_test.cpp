@@ -4,11 +4,7 @@
 
 #include <cmath>
 
-#include <cstring>
-#include <random>
-
 #include "mpm/core/materials.hpp"
-#include "mpm/core/mohr_coulomb_batch.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -118,48 +114,6 @@ TEST(MohrCoulombMaterial, InvariantsInCbGeoConvention) {
   const double j2 = ((2e4 * 2e4) + (1e4 * 1e4) + (1e4 * 1e4)) / 6.0;
   EXPECT_CLOSE(sv[4], std::sqrt(2 * j2), 1e-8, 1e-12);  // rho = sqrt(2 J2)
   EXPECT_CLOSE(sv[5], std::acos(0.0) / 3.0, 1e-12, 0);  // pure shear deviator: J3 = 0 -> theta = pi/6
-}
-
-// The four-lane elastic fast path settles exactly the particles whose scalar update is the elastic
-// trial, and writes that trial bit for bit; the rest (plastic, softening, another strength) it leaves
-// untouched for the scalar update. Random states around the surface of mc_spec() (c = 1 kPa, T = 50 Pa).
-TEST(MohrCoulombElasticBatch, SettlesTheElasticParticlesBitForBit) {
-  const MohrCoulomb m = MohrCoulomb::from(mc_spec());
-  const mpm::core::MohrCoulombElasticBatch batch(m);
-  constexpr std::size_t kState = MohrCoulomb::kStateCount;
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> stress_of(-20e3, 1e3), strain_of(-2e-4, 2e-4), pick(0, 1);
-  int settled_count = 0, left_count = 0;
-  for (int round = 0; round < 2000; ++round) {
-    double stress[16], dstrain[12], svars[4 * kState];
-    for (double& v : stress) v = stress_of(rng);
-    for (double& v : dstrain) v = strain_of(rng);
-    for (int i = 0; i < 4; ++i) {
-      m.initial_state(svars + i * kState);
-      if (pick(rng) < 0.1) svars[i * kState + 6] = 0.02;                   // softening
-      if (pick(rng) < 0.05) svars[i * kState] = m.phi_residual;            // another strength
-      if (pick(rng) < 0.05) stress[4 * i] = std::nan("");                  // not finite
-    }
-    double batched[16], scalar[16], scalar_svars[4 * kState];
-    std::memcpy(batched, stress, sizeof stress);
-    std::memcpy(scalar, stress, sizeof stress);
-    std::memcpy(scalar_svars, svars, sizeof svars);
-    const unsigned settled = batch.update(batched, dstrain, svars, kState);
-    for (int i = 0; i < 4; ++i) {
-      m.update(scalar + 4 * i, dstrain + 3 * i, scalar_svars + i * kState);
-      if ((settled >> i) & 1u) {
-        ++settled_count;
-        EXPECT_EQ(std::memcmp(batched + 4 * i, scalar + 4 * i, 4 * sizeof(double)), 0) << "round " << round;
-        EXPECT_EQ(std::memcmp(svars + i * kState, scalar_svars + i * kState, kState * sizeof(double)), 0);
-      } else {
-        ++left_count;
-        EXPECT_EQ(std::memcmp(batched + 4 * i, stress + 4 * i, 4 * sizeof(double)), 0) << "round " << round;
-      }
-    }
-  }
-  // Both kinds occur (else the test shows nothing).
-  EXPECT_GT(settled_count, 500);
-  EXPECT_GT(left_count, 1000);
 }
 
 }  // namespace
