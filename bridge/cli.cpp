@@ -218,6 +218,8 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     throw common::InputError("--loads", "not with --ground-motion: OpenSees' unbalance holds UniformExcitation's inertia "
                                         "load -M a_g besides the patterns' loads, which cannot be told apart");
   check_deck_options(deck);
+  if (std::error_code ec; std::filesystem::exists(o.out, ec) && !std::filesystem::is_directory(o.out, ec))
+    throw common::InputError("--out", "'" + o.out + "' is a file; give a folder (created when missing)");
   if (o.check_options) {
     out << "fem2mpm: the options are valid (the FEM files were not read)\n";
     return 0;
@@ -266,7 +268,8 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   // report and the text files are prepared; the text files are renamed only when both succeeded, and the
   // HDF5 file is removed again if anything else failed: a failed run leaves no output.
   const std::filesystem::path outdir = o.out;
-  std::filesystem::create_directories(outdir / "results" / deck.uuid);
+  if (std::error_code ec; !std::filesystem::create_directories(outdir / "results" / deck.uuid, ec) && ec)
+    throw common::OutputError("--out: cannot create " + (outdir / "results" / deck.uuid).string() + ": " + ec.message());
   const std::filesystem::path h5_path = outdir / d.particle_file;
   std::exception_ptr h5_error;
   double h5_seconds = 0;

@@ -240,6 +240,12 @@ TEST(Fem2mpmRegression, BadInputsFailCleanly) {
                                  (dir / "checked").string(), dir);
   EXPECT_EQ(checked.code, 0) << checked.err;
   EXPECT_FALSE(fs::exists(dir / "checked"));
+  // --out onto an existing file: named, exit 2, the file untouched.
+  std::ofstream(dir / "a_file") << "keep";
+  const Result onto_file = run(model + disp + stress + " --out " + (dir / "a_file").string(), dir);
+  EXPECT_EQ(onto_file.code, 2) << onto_file.err;
+  EXPECT_NE(onto_file.err.find("--out: '" + (dir / "a_file").string() + "' is a file"), std::string::npos) << onto_file.err;
+  EXPECT_EQ(slurp(dir / "a_file"), "keep");
   // Gravity is a magnitude acting in -y: CB-Geo's -9.81 would point it up.
   expect_clean_failure(model + disp + stress + " --gravity -9.81", dir, {"--gravity", "acts in -y", "-9.81"});
   // Element 1 listed clockwise in the model: named as such, not as "too distorted".
