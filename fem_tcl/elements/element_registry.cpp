@@ -51,17 +51,37 @@ const materials::UniaxialMaterial& ElementBuildContext::uniaxial_material(common
   return *it->second;
 }
 
-std::array<domain::Node*, 4> ElementBuildContext::quad_nodes(common::CommandArgs& args,
-                                                             const std::array<int, 4>& tags) const {
-  std::array<domain::Node*, 4> nodes{};
-  for (int i = 0; i < 4; ++i) {
+void ElementBuildContext::find_nodes(common::CommandArgs& args, std::span<const int> tags,
+                                     std::span<domain::Node*> nodes) const {
+  for (std::size_t i = 0; i < tags.size(); ++i) {
     nodes[i] = domain.find_node(tags[i]);
     if (!nodes[i]) args.fail("node " + std::to_string(tags[i]) + " does not exist");
-    for (int j = 0; j < i; ++j) {
+    for (std::size_t j = 0; j < i; ++j) {
       if (tags[j] == tags[i]) args.fail("node " + std::to_string(tags[i]) + " appears twice (collapsed element)");
     }
   }
+}
+
+std::array<domain::Node*, 4> ElementBuildContext::quad_nodes(common::CommandArgs& args,
+                                                             const std::array<int, 4>& tags) const {
+  std::array<domain::Node*, 4> nodes{};
+  find_nodes(args, tags, nodes);
   return nodes;
+}
+
+nlohmann::ordered_json continuum_element_json(const domain::Element& element, std::string_view type, double thickness,
+                                              double pressure, double rho, const domain::Vector2& body, int material_tag) {
+  nlohmann::ordered_json j;
+  j["name"] = element.tag();
+  j["type"] = type;
+  j["nodes"] = nlohmann::ordered_json::array();
+  for (int a = 0; a < element.num_nodes(); ++a) j["nodes"].push_back(element.nodes()[static_cast<std::size_t>(a)]->tag);
+  j["thickness"] = thickness;
+  j["surfacePressure"] = pressure;
+  j["masspervolume"] = rho;
+  j["bodyForces"] = {body[0], body[1]};
+  j["material"] = std::to_string(material_tag);
+  return j;
 }
 
 materials::PlaneType parse_plane_type(common::CommandArgs& args, const std::string& word) {

@@ -24,6 +24,8 @@ struct ElementBuildContext {
   const materials::NDMaterial& material(common::CommandArgs& args, int tag) const;
   /// Throws common::InputError naming `args`' command when the uniaxialMaterial does not exist.
   const materials::UniaxialMaterial& uniaxial_material(common::CommandArgs& args, int tag) const;
+  /// The nodes of `tags`, in order, into `nodes`; throws for a missing or repeated node tag.
+  void find_nodes(common::CommandArgs& args, std::span<const int> tags, std::span<domain::Node*> nodes) const;
   /// The four nodes; throws for a missing or repeated node tag.
   std::array<domain::Node*, 4> quad_nodes(common::CommandArgs& args, const std::array<int, 4>& tags) const;
 };
@@ -40,6 +42,11 @@ struct ElementParserEntry {
 
 std::span<const ElementParserEntry> element_parsers();
 const ElementParserEntry* find_element_parser(std::string_view type);
+
+/// OpenSees' `print -JSON` entry of a quad or triangle: name, type, nodes, thickness, surfacePressure,
+/// masspervolume, bodyForces, material.
+nlohmann::ordered_json continuum_element_json(const domain::Element& element, std::string_view type, double thickness,
+                                              double pressure, double rho, const domain::Vector2& body, int material_tag);
 
 /// "PlaneStrain" / "PlaneStress" (also OpenSees' "...2D" spellings); anything else is an error.
 materials::PlaneType parse_plane_type(common::CommandArgs& args, const std::string& word);

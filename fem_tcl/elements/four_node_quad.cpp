@@ -180,16 +180,7 @@ bool FourNodeQuad::update_material_stage(int stage) {
 }
 
 nlohmann::ordered_json FourNodeQuad::to_json() const {
-  nlohmann::ordered_json j;
-  j["name"] = tag();
-  j["type"] = "FourNodeQuad";
-  j["nodes"] = {nodes()[0]->tag, nodes()[1]->tag, nodes()[2]->tag, nodes()[3]->tag};
-  j["thickness"] = thickness_;
-  j["surfacePressure"] = pressure_;
-  j["masspervolume"] = rho_;
-  j["bodyForces"] = {body_[0], body_[1]};
-  j["material"] = std::to_string(material_tag_);
-  return j;
+  return continuum_element_json(*this, "FourNodeQuad", thickness_, pressure_, rho_, body_, material_tag_);
 }
 
 std::unique_ptr<domain::Element> parse_four_node_quad(common::CommandArgs& args, const ElementBuildContext& ctx) {

@@ -152,16 +152,7 @@ std::unique_ptr<domain::ElementState> Tri31::save_state() const { return save_ma
 void Tri31::restore_state(const domain::ElementState& state) { restore_material_points(std::span(&material_, 1), state); }
 
 nlohmann::ordered_json Tri31::to_json() const {
-  nlohmann::ordered_json j;
-  j["name"] = tag();
-  j["type"] = "Tri31";
-  j["nodes"] = {nodes()[0]->tag, nodes()[1]->tag, nodes()[2]->tag};
-  j["thickness"] = thickness_;
-  j["surfacePressure"] = pressure_;
-  j["masspervolume"] = rho_;
-  j["bodyForces"] = {body_[0], body_[1]};
-  j["material"] = std::to_string(material_tag_);
-  return j;
+  return continuum_element_json(*this, "Tri31", thickness_, pressure_, rho_, body_, material_tag_);
 }
 
 std::unique_ptr<domain::Element> parse_tri31(common::CommandArgs& args, const ElementBuildContext& ctx) {
@@ -183,12 +174,7 @@ std::unique_ptr<domain::Element> parse_tri31(common::CommandArgs& args, const El
   }
   args.expect_end();
   std::array<domain::Node*, 3> nodes{};
-  for (int i = 0; i < 3; ++i) {
-    nodes[i] = ctx.domain.find_node(tags[i]);
-    if (!nodes[i]) args.fail("node " + std::to_string(tags[i]) + " does not exist");
-    for (int j = 0; j < i; ++j)
-      if (tags[j] == tags[i]) args.fail("node " + std::to_string(tags[i]) + " appears twice (collapsed element)");
-  }
+  ctx.find_nodes(args, tags, nodes);
   const auto& material = ctx.material(args, mat);
   return std::make_unique<Tri31>(tag, nodes, material, plane, thick, p, rho, b1, b2);
 }

@@ -50,14 +50,17 @@ for {set j 0} {$j < $ny} {incr j} {
 )tcl";
 }
 
-void check_self_weight(const std::string& element) {
-  const int ny = 20;
-  fem::tcl::Interpreter interp;
-  run(interp, column_script(ny, element, -kRho * kG) + R"tcl(
+/// One static load step of the body forces.
+const std::string kGravityAnalysis = R"tcl(
 constraints Plain; numberer RCM; system BandSPD; test NormDispIncr 1e-12 5; algorithm Newton
 integrator LoadControl 1.0; analysis Static
 if {[analyze 1] != 0} { error "gravity failed" }
-)tcl");
+)tcl";
+
+void check_self_weight(const std::string& element) {
+  const int ny = 20;
+  fem::tcl::Interpreter interp;
+  run(interp, column_script(ny, element, -kRho * kG) + kGravityAnalysis);
   const double dy = kH / ny;
   for (int j = 0; j < ny; ++j) {
     const double depth = kH - (j + 0.5) * dy;
@@ -102,10 +105,7 @@ for {set j 0} {$j < $ny} {incr j} {
   element tri31 [incr e] [expr {$a+1}] [expr {$a+2}] [expr {$a+4}] 1.0 PlaneStrain 1 0.0 0.0 0.0 $b2
   element tri31 [incr e] [expr {$a+2}] [expr {$a+5}] [expr {$a+4}] 1.0 PlaneStrain 1 0.0 0.0 0.0 $b2
 }
-constraints Plain; numberer RCM; system BandSPD; test NormDispIncr 1e-12 5; algorithm Newton
-integrator LoadControl 1.0; analysis Static
-if {[analyze 1] != 0} { error "gravity failed" }
-)tcl");
+)tcl" + kGravityAnalysis);
   const double dy = kH / ny;
   for (int j = 0; j < ny; ++j) {
     const double depth = kH - (j + 0.5) * dy;
