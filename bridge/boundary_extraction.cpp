@@ -95,7 +95,8 @@ ExtractedBoundaries extract_boundaries(const FemModel& model) {
   std::vector<char> used(n, 0);
   double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
   for (const auto& e : model.elements)
-    for (int a : e.nodes) {
+    for (int k = 0; k < node_count(e.kind); ++k) {
+      const int a = e.nodes[static_cast<std::size_t>(k)];
       used[static_cast<std::size_t>(a)] = 1;
       xmin = std::min(xmin, crd(a).x()); xmax = std::max(xmax, crd(a).x());
       ymin = std::min(ymin, crd(a).y()); ymax = std::max(ymax, crd(a).y());
@@ -144,14 +145,16 @@ ExtractedBoundaries extract_boundaries(const FemModel& model) {
 
   // Boundary edges: element sides that only one element has (after joining tied nodes).
   std::map<std::pair<int, int>, std::pair<int, int>> sides;  // (a, b) -> (count, element index)
-  for (std::size_t e = 0; e < model.elements.size(); ++e)
-    for (int k = 0; k < 4; ++k) {
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const int corners = node_count(model.elements[e].kind);
+    for (int k = 0; k < corners; ++k) {
       const int a = canonical.find(model.elements[e].nodes[static_cast<std::size_t>(k)]);
-      const int b = canonical.find(model.elements[e].nodes[static_cast<std::size_t>((k + 1) % 4)]);
+      const int b = canonical.find(model.elements[e].nodes[static_cast<std::size_t>((k + 1) % corners)]);
       auto& s = sides[{std::min(a, b), std::max(a, b)}];
       ++s.first;
       s.second = static_cast<int>(e);
     }
+  }
   std::vector<Fixity> covered(n);
   std::set<int> inclined, misplaced;
   std::vector<EdgeOnLine> on_lines;
@@ -164,7 +167,7 @@ ExtractedBoundaries extract_boundaries(const FemModel& model) {
     if (!fx && !fy) continue;
     const auto& el = model.elements[static_cast<std::size_t>(s.second)];
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
-    for (int v : el.nodes) centroid += crd(v) / 4;
+    for (int k = 0; k < node_count(el.kind); ++k) centroid += crd(el.nodes[static_cast<std::size_t>(k)]) / node_count(el.kind);
     const Eigen::Vector2d pa = crd(a), pb = crd(b);
     const bool vertical = std::abs(pa.x() - pb.x()) <= tol, horizontal = std::abs(pa.y() - pb.y()) <= tol;
     if (vertical && fx) {

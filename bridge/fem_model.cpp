@@ -197,13 +197,15 @@ bool add_element_fast(FemModel& model, const FlatEntry& f, const std::string& wh
   const auto tag = f.tag("name");
   const auto* type = f.find("type");
   const auto* nodes = f.find("nodes");
-  if (!tag || !type || type->kind != Kind::String || !nodes || nodes->kind != Kind::Array || nodes->count != 4) return false;
+  if (!tag || !type || type->kind != Kind::String || !nodes || nodes->kind != Kind::Array) return false;
   FemElement e;
   e.tag = *tag;
   if (type->text == "SSPquad") e.kind = ElementKind::SSPquad;
   else if (type->text == "FourNodeQuad" || type->text == "quad") e.kind = ElementKind::Quad;
+  else if (type->text == "Tri31") e.kind = ElementKind::Tri31;
   else return false;
-  for (int a = 0; a < 4; ++a) {
+  if (nodes->count != static_cast<std::size_t>(node_count(e.kind))) return false;
+  for (int a = 0; a < node_count(e.kind); ++a) {
     const double v = nodes->items[static_cast<std::size_t>(a)];
     if (v != std::floor(v) || std::abs(v) > 9e15) return false;
     e.node_tags[static_cast<std::size_t>(a)] = static_cast<long>(v);
@@ -245,16 +247,17 @@ void add_element(FemModel& model, const json& j, const std::string& where_text) 
   } else if (type == "FourNodeQuad" || type == "quad") {
     e.kind = ElementKind::Quad;
   } else if (type == "Tri31") {
-    throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": Tri31 (a triangle) is not mapped to "
-                                         "particles yet; mesh the soil that is handed over with quads (SSPquad or quad)");
+    e.kind = ElementKind::Tri31;
   } else {
     throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": unsupported element type '" + type +
-                                             "' (expected SSPquad or FourNodeQuad/quad)");
+                                             "' (expected SSPquad, FourNodeQuad/quad or Tri31)");
   }
+  const int count = node_count(e.kind);
   const auto nodes = j.find("nodes");
-  if (nodes == j.end() || !nodes->is_array() || nodes->size() != 4)
-    throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": expected \"nodes\" with 4 node tags");
-  for (int a = 0; a < 4; ++a) {
+  if (nodes == j.end() || !nodes->is_array() || nodes->size() != static_cast<std::size_t>(count))
+    throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": expected \"nodes\" with " +
+                                             std::to_string(count) + " node tags");
+  for (int a = 0; a < count; ++a) {
     if (!(*nodes)[a].is_number_integer())
       throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": node tags must be integers");
     e.node_tags[a] = (*nodes)[a].get<long>();
@@ -340,7 +343,7 @@ void finish(FemModel& model, const std::filesystem::path& file) {
   if (model.nodes.empty()) throw common::InputError(where(file, "geometry.nodes"), "no nodes in the model");
   if (model.elements.empty()) throw common::InputError(where(file, "geometry.elements"), "no elements in the model");
   for (auto& e : model.elements) {
-    for (int a = 0; a < 4; ++a) {
+    for (int a = 0; a < node_count(e.kind); ++a) {
       const auto it = model.node_by_tag.find(e.node_tags[a]);
       if (it == model.node_by_tag.end())
         throw common::InputError(where(file, "geometry.elements"), "element " + std::to_string(e.tag) +

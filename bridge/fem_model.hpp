@@ -13,10 +13,12 @@
 
 namespace bridge {
 
-enum class ElementKind { SSPquad /* 1 Gauss point */, Quad /* 4 Gauss points */ };
+enum class ElementKind { SSPquad /* 1 Gauss point */, Quad /* 4 Gauss points */, Tri31 /* 3 nodes, 1 Gauss point */ };
 
-/// Number of Gauss points OpenSees records for the element kind (SSPquad 1, quad 4).
-inline int gauss_point_count(ElementKind kind) { return kind == ElementKind::SSPquad ? 1 : 4; }
+/// Number of Gauss points OpenSees records for the element kind (SSPquad 1, quad 4, Tri31 1).
+inline int gauss_point_count(ElementKind kind) { return kind == ElementKind::Quad ? 4 : 1; }
+/// Number of nodes of the element kind (the first ones of FemElement::nodes are used).
+inline int node_count(ElementKind kind) { return kind == ElementKind::Tri31 ? 3 : 4; }
 
 struct FemNode {
   long tag = 0;
@@ -26,8 +28,8 @@ struct FemNode {
 struct FemElement {
   long tag = 0;
   ElementKind kind = ElementKind::SSPquad;
-  std::array<long, 4> node_tags{};   ///< as in the file
-  std::array<int, 4> nodes{};        ///< indices into FemModel::nodes
+  std::array<long, 4> node_tags{};   ///< as in the file (the first node_count(kind))
+  std::array<int, 4> nodes{};        ///< indices into FemModel::nodes (the first node_count(kind))
   double thickness = 1;
   std::string material;              ///< material name ("" when the element names none)
   double mass_per_volume = 0;        ///< quad's `masspervolume` (replaces the material rho when > 0)

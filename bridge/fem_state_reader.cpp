@@ -9,6 +9,7 @@
 #include "bridge/drucker_prager_match.hpp"
 #include "bridge/multi_yield_match.hpp"
 #include "bridge/recorder_file.hpp"
+#include "bridge/triangle_split.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
 #include "common/printable_text.hpp"
@@ -374,6 +375,7 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     TransferElement e;
     e.tag = fe.tag;
     e.nodes = fe.nodes;
+    e.node_count = node_count(fe.kind);
     e.gauss_points = gauss_point_count(fe.kind);
     e.material = material_ids.at(fe.material);
     const MpmMaterial& mat = st.materials[e.material];
@@ -381,8 +383,8 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     if (!(e.density > 0))
       throw common::InputError(model.source.string() + ": element " + std::to_string(fe.tag),
                                "no density (material '" + fe.material + "' has no rho and the element no masspervolume); give --density");
-    for (int a : fe.nodes)
-      if (!recorded[static_cast<std::size_t>(a)])
+    for (int k = 0; k < e.node_count; ++k)
+      if (const int a = fe.nodes[static_cast<std::size_t>(k)]; !recorded[static_cast<std::size_t>(a)])
         throw common::InputError(options.disp.string(), "no column for node " + std::to_string(model.nodes[static_cast<std::size_t>(a)].tag) +
                                                             ", used by element " + std::to_string(fe.tag) + "; record all element nodes");
     if (fe.body_force.norm() > 0) gravity_samples.push_back(fe.body_force.norm() * factor / e.density);
@@ -441,6 +443,9 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
                         "nu (sxx + syy), plane-strain elasticity (exact for elastic states, approximate after yield; "
                         "record `stress3D` for the full tensor)");
   if (comps == 5) out.notes.push_back(stress.path().string() + ": 5 values per Gauss point read as sxx syy szz sxy ratio (multi-yield `stress`)");
+  if (const std::size_t triangles = split_triangles(st); triangles > 0)
+    out.notes.push_back(std::to_string(triangles) + " Tri31 triangles each split into 3 quads (centroid to side "
+                        "midpoints) for the particle mapping; each quad takes its triangle's stress");
 
   // --- gravity and unit sanity
   if (options.gravity) {

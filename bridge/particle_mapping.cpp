@@ -9,7 +9,9 @@ namespace bridge {
 std::vector<long> inverted_elements(const TransferState& state, bool reference) {
   std::vector<long> bad;
   for (const auto& e : state.elements)
-    if (!(min_jacobian_determinant(reference ? state.reference_nodes(e) : state.current_nodes(e)) > 0)) bad.push_back(e.tag);
+    if (!(min_jacobian_determinant(reference ? state.reference_nodes(e) : state.current_nodes(e)) > 0) &&
+        (bad.empty() || bad.back() != e.tag))  // the three quads of a split triangle share its tag
+      bad.push_back(e.tag);
   return bad;
 }
 

@@ -26,8 +26,9 @@ struct MpmMaterial {
 
 struct TransferElement {
   long tag = 0;
-  std::array<int, 4> nodes{};   ///< indices into the node arrays, counter-clockwise
-  int gauss_points = 1;         ///< 1 (SSPquad, at the centre) or 4 (quad, OpenSees order)
+  std::array<int, 4> nodes{};   ///< indices into the node arrays, counter-clockwise (the first node_count)
+  int node_count = 4;           ///< 4, or 3 for a triangle until split_triangles makes it three quads
+  int gauss_points = 1;         ///< 1 (SSPquad at the centre, Tri31 at the centroid) or 4 (quad, OpenSees order)
   double density = 0;           ///< kg/m3
   unsigned material = 0;        ///< index into TransferState::materials
 };

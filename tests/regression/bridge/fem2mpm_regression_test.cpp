@@ -451,6 +451,56 @@ TEST(Fem2mpmRegression, LayeredSlopeKeepsItsSupportsThroughTheChain) {
   EXPECT_GT(slope, 0.05);
 }
 
+// A triangle mesh through the chain: tri31_column.tcl (40 Tri31, an elastic 10 m column at rest under its
+// weight, rho = 2 Mg/m3) -> fem2mpm (each triangle split into 3 quads, 2 x 2 particles each) -> mpm for
+// 0.2 s. Exact: the mass rho H (1 m wide) = 20,000 kg/m, and the volume mean of syy = -rho g H / 2 =
+// -98.1 kPa (the layer means of the triangles' stresses are exact, tests/verification/fem/column_test.cpp;
+// the recovery to the nodes and back moves it by 1e-5 here, asserted 1e-3). The column then stays at
+// rest in the MPM run (each particle moves < 2 mm: the transferred state is in equilibrium).
+TEST(Fem2mpmRegression, TriangleMeshColumnThroughTheChain) {
+  const fs::path fem_tcl = fs::path(GEOFLOW_BIN_DIR) / "fem_tcl", mpm = fs::path(GEOFLOW_BIN_DIR) / "mpm";
+  if (!fs::exists(fem_tcl) || !fs::exists(mpm)) GTEST_SKIP() << "build fem_tcl and mpm first (targets fem_tcl, mpm)";
+  const fs::path dir = scratch_dir("tri31_column");
+  fs::copy_file(fs::path(GEOFLOW_SOURCE_DIR) / "tests/regression/bridge/tri31_column.tcl", dir / "tri31_column.tcl");
+  ASSERT_EQ(std::system(("cd " + dir.string() + " && " + fem_tcl.string() + " tri31_column.tcl > fem.txt 2>&1").c_str()), 0)
+      << slurp(dir / "fem.txt");
+  const fs::path deck = dir / "deck";
+  const Result r = run("--model " + (dir / "model.json").string() + " --disp " + (dir / "disp.out").string() + " --vel " +
+                           (dir / "vel.out").string() + " --stress " + (dir / "stress.out").string() +
+                           " --units kN --ppd 2 --duration 0.2 --out " + deck.string(),
+                       dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("40 Tri31 triangles each split into 3 quads"), std::string::npos) << r.out;
+  const auto mpm_deck = nlohmann::json::parse(slurp(deck / "mpm.json"));
+  const long long nsteps = mpm_deck["analysis"]["nsteps"].get<long long>();
+  const auto transferred = mpm::io::read_particle_table(deck / "results/column" / mpm::io::particle_file_name(0, nsteps));
+  ASSERT_EQ(transferred.size(), 40u * 3u * 4u);
+  double mass = 0, volume = 0, syy = 0;
+  for (const auto& p : transferred) {
+    mass += p.mass;
+    volume += p.volume;
+    syy += p.stress_yy * p.volume;
+  }
+  EXPECT_CLOSE(mass, 2000.0 * 10.0, 1e-12, 1e-12);
+  // The deformed column: 10 m2 less the mean settlement of the top, rho g H^2 / (2 M) with the oedometric
+  // modulus M = E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 120 MPa (exact for the mean; column_test.cpp).
+  EXPECT_CLOSE(volume, 10.0 - 2000.0 * 9.81 * 100.0 / (2.0 * 120e6), 1e-12, 1e-12);
+  EXPECT_CLOSE(syy / volume, -2000.0 * 9.81 * 10.0 / 2.0, 0.0, 1e-3);
+
+  ASSERT_EQ(std::system((mpm.string() + " -f " + deck.string() + "/ -i mpm.json > " + (dir / "mpm.txt").string() + " 2>&1").c_str()), 0)
+      << slurp(dir / "mpm.txt");
+  const long long last = (nsteps - 1) / mpm_deck["post_processing"]["output_steps"].get<long long>() *
+                         mpm_deck["post_processing"]["output_steps"].get<long long>();
+  const auto later = mpm::io::read_particle_table(deck / "results/column" / mpm::io::particle_file_name(last, nsteps));
+  ASSERT_EQ(later.size(), transferred.size());
+  double moved = 0;
+  for (const auto& a : later) {
+    const auto& b = transferred[static_cast<std::size_t>(a.id)];
+    moved = std::max(moved, std::hypot(a.coord_x - b.coord_x, a.coord_y - b.coord_y));
+  }
+  EXPECT_LT(moved, 2e-3);
+}
+
 // A transfer during shaking (fem2mpm --ground-motion, issue 12): shaken_column.tcl shakes an elastic column
 // vertically by UniformExcitation (a 0.2 g, 3 Hz Hann-windowed sine burst of 0.6 s, Path -dt 0.01), and is
 // transferred at t = 0.3 s, in the middle of the burst. The MPM run, shaken on by the rest of the record

@@ -72,14 +72,30 @@ TEST(FemModel, ToleratesOpenSeesInvalidJsonForPlasticMaterials) {
 TEST(FemModel, RejectsUnsupportedElementAndUnknownNode) {
   const std::string bad_type = R"({"StructuralAnalysisModel": {"geometry": {
     "nodes": [{"name": 1, "crd": [0, 0]}],
-    "elements": [{"name": 5, "type": "Tri31", "nodes": [1, 1, 1], "material": "1"}]}}})";
+    "elements": [{"name": 5, "type": "bbarQuad", "nodes": [1, 1, 1, 1], "material": "1"}]}}})";
   try {
     bridge::parse_fem_model(bad_type, "m.json");
     FAIL() << "expected an InputError";
   } catch (const common::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("m.json"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("Tri31"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("mesh the soil that is handed over with quads"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'bbarQuad' (expected SSPquad, FourNodeQuad/quad or Tri31)"), std::string::npos)
+        << e.what();
+  }
+  // Tri31 takes three nodes, and only three.
+  const std::string triangle = R"({"StructuralAnalysisModel": {"geometry": {
+    "nodes": [{"name": 1, "crd": [0, 0]}, {"name": 2, "crd": [1, 0]}, {"name": 3, "crd": [0, 1]}],
+    "elements": [{"name": 5, "type": "Tri31", "nodes": [1, 2, 3], "thickness": 1.0, "material": "1"}]}}})";
+  const auto tri = bridge::parse_fem_model(triangle, "t.json");
+  ASSERT_EQ(tri.elements.size(), 1u);
+  EXPECT_EQ(tri.elements[0].kind, bridge::ElementKind::Tri31);
+  EXPECT_EQ(tri.elements[0].nodes[2], 2);
+  std::string four = triangle;
+  four.replace(four.find("[1, 2, 3]"), 9, "[1, 2, 3, 1]");
+  try {
+    bridge::parse_fem_model(four, "t.json");
+    FAIL() << "expected an InputError";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected \"nodes\" with 3 node tags"), std::string::npos) << e.what();
   }
   const std::string bad_node = R"({"StructuralAnalysisModel": {"geometry": {
     "nodes": [{"name": 1, "crd": [0, 0]}],
