@@ -20,7 +20,8 @@
 namespace mpm::core {
 
 namespace {
-/// Nodes with less mass take no part in the grid update (CB-Geo's tolerance, include/node.tcc).
+/// Nodes with less mass take no part in the grid update (CB-Geo's tolerance, include/node.tcc, in kg; see
+/// Engine::mass_tolerance_ for decks in other mass units).
 constexpr double kMassTolerance = 1.0e-15;
 /// The small-mass cutoff as a fraction of a full node's mass rho hx hy (see Engine::small_mass_).
 constexpr double kSmallMassFraction = 0.02;
@@ -108,6 +109,9 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   for (const auto& spec : deck.materials) lightest = std::min(lightest, spec.density);
   const bool reads_updated_gradients = !gimp && (scheme_ == io::Scheme::USL || transfer_.affine());
   small_mass_ = reads_updated_gradients ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
+  // CB-Geo's absolute 1e-15, but never more than 1e-15 of a full node of the lightest material: a deck whose
+  // densities are tiny numbers (other mass units) must not find every node empty and its body frozen.
+  mass_tolerance_ = std::min(kMassTolerance, kMassTolerance * lightest * grid_.hx * grid_.hy);
 
   // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).
   constraint_of_.assign(nodes_, -1);
@@ -602,7 +606,7 @@ void Engine::nodal_velocity_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
     double vx = 0.0, vy = 0.0;
-    if (mass_[n] > kMassTolerance) {
+    if (mass_[n] > mass_tolerance_) {
       vx = momentum_[2 * n] / mass_[n];
       vy = momentum_[2 * n + 1] / mass_[n];
     }
@@ -626,7 +630,7 @@ void Engine::integrate_row(int j) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
     double* u = &updated_[4 * n];
     const double m = mass_[n];
-    if (!(m > kMassTolerance)) {
+    if (!(m > mass_tolerance_)) {
       u[0] = u[1] = u[2] = u[3] = 0.0;
       continue;
     }
@@ -874,7 +878,7 @@ void Engine::nodal_remedy_row(int j) {
       for (int f = 0; f < 4; ++f) s[f] += gn[f];
     }
     const double weight = proj.volume_weighted ? s[3] : mass_[n];
-    const double inv_w = weight > (proj.volume_weighted ? 0.0 : kMassTolerance) ? 1.0 / weight : 0.0;
+    const double inv_w = weight > (proj.volume_weighted ? 0.0 : mass_tolerance_) ? 1.0 / weight : 0.0;
     for (int f = 0; f < proj.values; ++f) nodal_remedy_[3 * n + f] = s[f] * inv_w;
   }
 }

@@ -177,6 +177,7 @@ class Engine {
   /// the paper's columns with FLIP and APIC to 20 s and 8 s), while the forces it dropped made USL's
   /// sliding block on a one-sided contact miss Coulomb by 5 % (FLIP) and 9 % (APIC) in v (now 0.6 %).
   double small_mass_ = 0.0;
+  double mass_tolerance_ = 1.0e-15;  ///< nodes with no more mass are empty (kMassTolerance, scaled for tiny densities)
   std::vector<std::int32_t> constraint_of_;       ///< per node: index into constraints_, -1: unconstrained
   std::vector<NodeConstraint> constraints_;       ///< the constrained nodes' velocity and friction constraints
   /// A one-sided contact node (NodeConstraint::one_sided): its constraint index and the lattice index,

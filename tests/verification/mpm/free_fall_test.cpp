@@ -38,6 +38,25 @@ TEST_P(FreeFall, FollowsNewtonAndStaysStressFree) {
   EXPECT_CLOSE(sim.time(), n * dt, 1e-12, 0);
 }
 
+// The same block with its density and modulus in other units (x 1e-19: 1.5e-16 "kg/m3", the wave speed
+// and the time step unchanged) falls the same way: the empty-node tolerance (CB-Geo's absolute 1e-15 kg)
+// scales with the lightest material, so its nodes are not all empty and the body not frozen.
+TEST(FreeFall, TinyDensityUnitsFallTheSame) {
+  Deck deck;
+  deck.grid = make_grid(0, 0, 0.5, 8, 16, CellType::Gimp16);
+  deck.materials.push_back(elastic(0, 1500e-19, 4e6 * 1e-19, 0.25));
+  fill_block(deck, 1.5, 2.5, 6.0, 7.0, 2, 0);
+  deck.analysis.gravity = {0, -9.81};
+  deck.analysis.dt = 1e-3;
+  mpm::core::Simulation sim(deck, 1);
+  const auto start = sim.snapshot();
+  const int n = 100;
+  for (int i = 0; i < n; ++i) sim.step();
+  const auto end = sim.snapshot();
+  for (std::size_t p = 0; p < end.size(); ++p)
+    EXPECT_CLOSE(end[p].coord_y, start[p].coord_y - 9.81 * 1e-6 * n * (n + 1) / 2.0, 1e-9, 1e-9) << "particle " << p;
+}
+
 INSTANTIATE_TEST_SUITE_P(Schemes, FreeFall,
                          ::testing::Combine(::testing::Values(CellType::Linear4, CellType::Gimp16),
                                             ::testing::Values(mpm::io::Scheme::USF, mpm::io::Scheme::USL,
