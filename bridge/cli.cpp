@@ -113,7 +113,9 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
                   const CliOptions& o, const std::vector<BoundaryChoice>& boundaries, const std::filesystem::path& outdir,
                   const Timing& t, const LoadSummary& loads) {
   out << "fem2mpm: FEM state at t = " << fmt(a.state.time, 9) << " s -> " << r.particle_count << " particles ("
-      << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd << "), stress recovery "
+      << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd
+      << (a.triangles_split ? ", " + std::to_string(a.triangles_split) + " of the FEM's triangles as 3 quads each" : std::string())
+      << "), stress recovery "
       << (o.recovery == "spr" ? "SPR (Zienkiewicz-Zhu)" : "inverse-distance weighting") << "\n";
   for (const auto& n : a.notes) out << "  note: " << n << "\n";
   out << "                        FEM (lumped nodes)    particles        relative change\n";

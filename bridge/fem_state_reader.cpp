@@ -443,8 +443,9 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
                         "nu (sxx + syy), plane-strain elasticity (exact for elastic states, approximate after yield; "
                         "record `stress3D` for the full tensor)");
   if (comps == 5) out.notes.push_back(stress.path().string() + ": 5 values per Gauss point read as sxx syy szz sxy ratio (multi-yield `stress`)");
-  if (const std::size_t triangles = split_triangles(st); triangles > 0)
-    out.notes.push_back(std::to_string(triangles) + " Tri31 triangles each split into 3 quads (centroid to side "
+  out.triangles_split = split_triangles(st);
+  if (out.triangles_split > 0)
+    out.notes.push_back(std::to_string(out.triangles_split) + " Tri31 triangles each split into 3 quads (centroid to side "
                         "midpoints) for the particle mapping; each quad takes its triangle's stress");
 
   // --- gravity and unit sanity

@@ -48,6 +48,7 @@ struct AssembledState {
   TransferState state;
   std::string source_row;                   ///< "<disp file>:<line>" of the row used, for messages
   int stress_components = 3;                ///< values per Gauss point in the stress file (3, 5 or 6)
+  std::size_t triangles_split = 0;          ///< Tri31 elements mapped as 3 quads each (split_triangles)
   std::vector<std::string> notes;           ///< what the user should know (derived szz, zero velocity, ...)
   std::vector<std::string> warnings;        ///< suspicious input (units)
 };
