@@ -12,6 +12,7 @@
 #   --duration 1 --ppd 1 -- -cell 2
 #
 # Usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-fos no|yes?
+#        ?-mesh quad|tri? (tri: each block2D SSPquad cut along its 1-3 diagonal into two tri31, tags 100001..)
 # Units kN, m, s, kPa, Mg/m3. Geometry (m): foundation 0 <= x <= 44, 0 <= y <= 4; slope block on top with
 # corners (0, 4), (24, 4), (14, 14), (0, 14): crest at x = 14, toe at x = 24, slope 1:1. -cell must divide
 # 4, 10, 14 and 24 (1 or 2), so that the slope block's base nodes fall on the foundation's top nodes.
@@ -20,10 +21,10 @@
 # hybrid_run.py contract every -record s. -fos yes: the factor of safety instead (hybrid_stages.tcl fos_stage).
 source [file join [file dirname [info script]] hybrid_stages.tcl]
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} {
-    error "slope_on_foundation.tcl: missing <outdir>; usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-fos no|yes?"
+    error "slope_on_foundation.tcl: missing <outdir>; usage: fem_tcl slope_on_foundation.tcl <outdir> ?-cell 1? ?-tend 0.5? ?-dt 0.005? ?-record 0.05? ?-fos no|yes? ?-mesh quad|tri?"
 }
 set outdir [lindex $argv 0]
-array set opt {-cell 1.0 -tend 0.5 -dt 0.005 -record 0.05 -fos no}
+array set opt {-cell 1.0 -tend 0.5 -dt 0.005 -record 0.05 -fos no -mesh quad}
 parse_options slope_on_foundation.tcl opt [lrange $argv 1 end]
 file mkdir $outdir
 set h $opt(-cell)
@@ -44,6 +45,18 @@ set nyS [expr {int(round(10.0 / $h))}]
 set n0 [expr {($nxF + 1) * ($nyF + 1) + 1}]
 set e0 [expr {$nxF * $nyF + 1}]
 block2D $nxS $nyS $n0 $e0 SSPquad $eleArgs {1 0 4 2 24 4 3 14 14 4 0 14}
+if {$opt(-mesh) eq "tri"} {
+    # every SSPquad as two constant-strain triangles, cut from its node 1 to its node 3
+    foreach e [getEleTags] {
+        set n [eleNodes $e]
+        remove element $e
+        foreach {k a b c} [list 1 0 1 2 2 0 2 3] {
+            element tri31 [expr {100000 + 2 * $e - 2 + $k}] [lindex $n $a] [lindex $n $b] [lindex $n $c] 1.0 PlaneStrain 1 0.0 0.0 0.0 [expr {-$rho * $g}]
+        }
+    }
+} elseif {$opt(-mesh) ne "quad"} {
+    error "slope_on_foundation.tcl: expected quad or tri after -mesh, got '$opt(-mesh)'"
+}
 set ties [tie_coincident_nodes [expr {1e-6 * $h}]]
 if {$ties != $nxS + 1} { error "slope_on_foundation.tcl: -cell $h: $ties of the slope's [expr {$nxS + 1}] base nodes lie on foundation nodes (-cell must divide 4, 10, 14 and 24)" }
 
@@ -58,4 +71,4 @@ if {[fos_asked slope_on_foundation.tcl $opt(-fos)]} {
 } else {
     collapse_stage {1} $outdir $opt(-tend) $opt(-dt) $opt(-record)
 }
-puts stdout "slope_on_foundation: [llength [getNodeTags]] nodes, [llength [getEleTags]] SSPquads, $ties tied node pairs"
+puts stdout "slope_on_foundation: [llength [getNodeTags]] nodes, [llength [getEleTags]] [expr {$opt(-mesh) eq "tri" ? "tri31 triangles" : "SSPquads"}], $ties tied node pairs"

@@ -15,6 +15,8 @@ Physics checks, from the examples' headers (each example is built to fail):
 - the script's own factor of safety (`-fos yes`, strength reduction from the gravity state, with the test
   run's script arguments) is below 1 (slope_on_foundation, embankment_two_layers, clay_slope: 0.86, 0.77,
   0.64 on the test run's coarse cells; 0.68, 0.59, 0.57 on the default ones).
+slope_on_foundation runs twice: as written and with `-mesh tri` (every SSPquad as two tri31 triangles; the
+same checks).
 """
 import argparse
 import csv
@@ -73,13 +75,19 @@ def main():
     check = checks.expect
 
     runs = 0
+    cases = []
     for ex in examples:
         words = header_command(ex, "sample run")
         if words is None:
             continue   # a sourced helper (no sample run)
         words = small_version(words, header_command(ex, "test run") or [])
+        cases.append((ex, os.path.basename(ex), words))
+        if os.path.basename(ex) == "slope_on_foundation.tcl":
+            # The same slope meshed with tri31 triangles (-mesh tri), through fem2mpm's triangle split.
+            cases.append((ex, "slope_on_foundation.tcl -mesh tri", words + ([] if "--" in words else ["--"]) + ["-mesh", "tri"]))
+    for ex, name, words in cases:
         runs += 1
-        name = os.path.basename(ex)
+        words = list(words)
         out = tempfile.mkdtemp(prefix="example_%s_" % os.path.splitext(name)[0])
         try:
             check("%s: the sample run calls scripts/hybrid_run.py" % name, words[0] == "scripts/hybrid_run.py", words[0])
