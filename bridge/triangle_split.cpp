@@ -29,7 +29,7 @@ std::size_t split_triangles(TransferState& state) {
   };
   std::map<std::pair<int, int>, int> midpoint_of;  // side (low, high node) -> its midpoint node
   const auto midpoint = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
+    const std::pair<int, int> key = std::minmax(a, b);  // a copy: minmax returns references to a and b
     if (const auto it = midpoint_of.find(key); it != midpoint_of.end()) return it->second;
     const int m = add_node({a, b});
     midpoint_of.emplace(key, m);
@@ -38,7 +38,7 @@ std::size_t split_triangles(TransferState& state) {
 
   std::vector<TransferElement> elements;
   std::vector<Stress6> stress;
-  elements.reserve(state.elements.size() + 2 * state.elements.size());
+  elements.reserve(3 * state.elements.size());
   stress.reserve(state.gauss_stress.size() + 2 * state.elements.size());
   std::size_t split = 0;
   for (std::size_t e = 0; e < state.elements.size(); ++e) {

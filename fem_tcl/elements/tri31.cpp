@@ -167,10 +167,11 @@ std::unique_ptr<domain::Element> parse_tri31(common::CommandArgs& args, const El
   // which here is an error: a script that gives two of them means something).
   double p = 0.0, rho = 0.0, b1 = 0.0, b2 = 0.0;
   if (!args.empty()) {
-    p = args.number("pressure (the optional block is: pressure rho b1 b2, all four)");
-    rho = args.number("rho (the optional block is: pressure rho b1 b2, all four)");
-    b1 = args.number("b1 (the optional block is: pressure rho b1 b2, all four)");
-    b2 = args.number("b2 (the optional block is: pressure rho b1 b2, all four)");
+    const std::string block = " (the optional block is: pressure rho b1 b2, all four)";
+    p = args.number("pressure" + block);
+    rho = args.number("rho" + block);
+    b1 = args.number("b1" + block);
+    b2 = args.number("b2" + block);
   }
   args.expect_end();
   std::array<domain::Node*, 3> nodes{};

@@ -186,7 +186,6 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
     }
     rs.finish();
   }
-  // Keys of CB-Geo that change nothing here, accepted only with the value this program honours.
   // CB-Geo's pressure smoothing maps the "pressure" state variable of its fluid materials (Newtonian,
   // Bingham) to the nodes and back (mpm_explicit.tcc pressure_smoothing, particle.tcc
   // map_pressure_to_nodes: only where that state variable exists); its solids have none, so there it
@@ -196,6 +195,7 @@ void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string&
                               ": true changes nothing for LinearElastic2D and MohrCoulomb2D (as in CB-Geo, where it "
                               "smooths the pressure of fluid materials only); the checkerboard remedies for solids are "
                               "analysis.stress_smoothing");
+  // Keys of CB-Geo that change nothing here, accepted only with the value this program honours.
   a.accept_only("interface", {false}, "multi-material contact is not implemented");
   if (const json* nlb = a.optional("nload_balance_steps"))
     if (!nlb->is_number_integer() || nlb->get<long long>() <= 0)
