@@ -11,3 +11,18 @@
 #else
 #define CPU_VARIANTS
 #endif
+
+namespace common {
+/// Whether the kernels run with 4-double (256-bit) vector registers: the AVX2 variant taken on this
+/// CPU, or a whole build for AVX2. Without them a 4-double vector is two 2-double ones and code written
+/// for four lanes (mpm/core/stencil_runs.hpp) costs more than it saves.
+inline bool wide_vector_kernels() {
+#if defined(__AVX2__)
+  return true;
+#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
+}  // namespace common

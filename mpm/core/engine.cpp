@@ -70,6 +70,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
 
   scheme_ = an.scheme;
   transfer_ = VelocityTransfer::from(an);
+  stencil_runs_ = common::wide_vector_kernels();
   locate_ = an.locate_particles;
   damping_ = an.cundall_damping;
   if (!(damping_ >= 0.0 && damping_ < 1.0))
@@ -179,7 +180,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     cur_.x[p] = r.coord_x;
     cur_.y[p] = r.coord_y;
     cur_.key[p] = cell_key(r.coord_x, r.coord_y);
-    ++per_cell[static_cast<std::size_t>(cur_.key[p])];
+    ++per_cell[static_cast<std::size_t>(cell_of(cur_.key[p]))];
   }
   for (std::size_t p = 0; p < n; ++p) {
     const io::ParticleRecord& r = deck.particles[p];
@@ -187,7 +188,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     // CB-Geo defaults: volume = cell area / particles in the cell, mass = density * volume,
     // nsize = 2 / sqrt(particles in the cell) (2 / particles per direction). Each applies on its own
     // (a deck may give volumes, e.g. mesh.particles_volumes, but no sizes).
-    const double count = per_cell[static_cast<std::size_t>(cur_.key[p])];
+    const double count = per_cell[static_cast<std::size_t>(cell_of(cur_.key[p]))];
     cur_.volume[p] = r.volume > 0 ? r.volume : grid_.hx * grid_.hy / count;
     cur_.mass[p] = r.volume > 0 && r.mass > 0 ? r.mass : mat.density * cur_.volume[p];
     const bool sized = r.nsize_x > 0 && r.nsize_y > 0;
@@ -226,6 +227,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   const int width = gimp ? GimpShape::kWidth : LinearShape::kWidth;
   base_.resize(n);
   weights_.resize(n * 4 * static_cast<std::size_t>(width));
+  run_lane_.resize(n);
   dstrain_.resize(3 * n);
   if (transfer_.affine()) {
     stencil_offset_.resize(2 * n);
@@ -233,7 +235,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   }
   order_.reserve(n);
   sorted_.resize(n);
-  bucket_.resize(static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
+  bucket_.resize(4 * static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
   const std::size_t max_chunks = n / kChunkParticles + 2;
   chunk_.resize(max_chunks + 1);
   chunk_row0_.resize(max_chunks);
@@ -256,18 +258,24 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
 
 std::int64_t Engine::cell_key(double x, double y) const {
   // Truncation, then the clamp below: the same as floor + clamp, without the floor calls.
-  int i = static_cast<int>((x - grid_.x0) * inv_hx_);
-  int j = static_cast<int>((y - grid_.y0) * inv_hy_);
+  const double sx = (x - grid_.x0) * inv_hx_, sy = (y - grid_.y0) * inv_hy_;
+  int i = static_cast<int>(sx);
+  int j = static_cast<int>(sy);
   i = std::clamp(i, 0, cells_x_ - 1);
   j = std::clamp(j, 0, cells_y_ - 1);
-  return static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_x_;
+  const std::int64_t cell = static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_x_;
+  if (grid_.cell_type != io::CellType::Gimp16) return 4 * cell;
+  // uGIMP: the upper half of the cell on an axis has the next node as its nearest (GimpShape::nearest_node).
+  const int qx = GimpShape::nearest_node(sx) > i ? 1 : 0, qy = GimpShape::nearest_node(sy) > j ? 1 : 0;
+  return 4 * cell + qx + 2 * qy;
 }
 
 // ---------------------------------------------------------------------------------------------------
-// Sorting: order_ = live particles by (cell, id). A counting sort by cell of the previous order, then
-// an insertion sort by id inside each cell (nearly sorted already); after a step in which few
-// particles changed cell, a merge of those few into the rest (resort_particles). The result depends
-// only on the particle state, so a resumed run iterates in the same order as the uninterrupted one.
+// Sorting: order_ = live particles by (key, id), the key the cell and its stencil quadrant (cell_key).
+// A counting sort by key of the previous order, then an insertion sort by id inside each key's run
+// (nearly sorted already); after a step in which few particles changed key, a merge of those few into
+// the rest (resort_particles). The result depends only on the particle state, so a resumed run
+// iterates in the same order as the uninterrupted one.
 // Serial: it is the one phase of a step the threads do not share.
 // ---------------------------------------------------------------------------------------------------
 void Engine::sort_particles() {
@@ -305,17 +313,17 @@ void Engine::sort_particles() {
   cut_chunks();
 }
 
-/// After a step, when few particles changed cell: the particles that kept theirs are still in (cell,
+/// After a step, when few particles changed key: the particles that kept theirs are still in (key,
 /// id) order along the previous order, so the new order is their sequence merged with the few others
-/// sorted, in one pass instead of the counting sort. (cell, id) is unique, so the order is the one
+/// sorted, in one pass instead of the counting sort. (key, id) is unique, so the order is the one
 /// sort_particles() gives. `previous` maps an iteration index of the step to the particle's storage
-/// index in nxt_ (the previous buffer), where its old cell key is.
+/// index in nxt_ (the previous buffer), where its old key is.
 void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
   const std::size_t n_old = previous.size();
-  const auto kept_cell = [&](std::size_t k) { return cur_.key[k] == nxt_.key[previous[k]]; };
+  const auto kept_key = [&](std::size_t k) { return cur_.key[k] == nxt_.key[previous[k]]; };
   movers_.clear();
   for (std::size_t k = 0; k < n_old; ++k)
-    if (cur_.key[k] != kRemoved && !kept_cell(k)) movers_.push_back(static_cast<std::uint32_t>(k));
+    if (cur_.key[k] != kRemoved && !kept_key(k)) movers_.push_back(static_cast<std::uint32_t>(k));
   order_.resize(n_old);
   if (movers_.size() > n_old / 16) {  // many: the counting sort is cheaper than sorting them
     for (std::size_t k = 0; k < n_old; ++k) order_[k] = static_cast<std::uint32_t>(k);
@@ -328,7 +336,7 @@ void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
   std::sort(movers_.begin(), movers_.end(), before);
   std::size_t n = 0, m = 0;
   for (std::size_t k = 0; k < n_old; ++k) {
-    if (cur_.key[k] == kRemoved || !kept_cell(k)) continue;
+    if (cur_.key[k] == kRemoved || !kept_key(k)) continue;
     const auto p = static_cast<std::uint32_t>(k);
     while (m < movers_.size() && before(movers_[m], p)) order_[n++] = movers_[m++];
     order_[n++] = p;
@@ -342,12 +350,12 @@ void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
 void Engine::cut_chunks() {
   const std::size_t n = order_.size();
   int cmin_i = cells_x_, cmax_i = -1, cmin_j = cells_y_, cmax_j = -1;
-  std::int64_t previous_key = kRemoved;
+  std::int64_t previous_cell = kRemoved;
   for (std::size_t k = 0; k < n; ++k) {
-    const std::int64_t key = cur_.key[order_[k]];
-    if (key == previous_key) continue;
-    previous_key = key;
-    const int i = static_cast<int>(key % cells_x_), j = static_cast<int>(key / cells_x_);
+    const std::int64_t cell = cell_of(cur_.key[order_[k]]);
+    if (cell == previous_cell) continue;
+    previous_cell = cell;
+    const int i = static_cast<int>(cell % cells_x_), j = static_cast<int>(cell / cells_x_);
     cmin_i = std::min(cmin_i, i);
     cmax_i = std::max(cmax_i, i);
     cmin_j = std::min(cmin_j, j);
@@ -369,7 +377,7 @@ void Engine::cut_chunks() {
   chunk_[0] = 0;
   for (std::size_t c = 1; c < chunks_; ++c) {
     std::size_t k = std::max(chunk_[c - 1], n * c / chunks_);
-    while (k > 0 && k < n && cur_.key[order_[k]] == cur_.key[order_[k - 1]]) ++k;
+    while (k > 0 && k < n && cell_of(cur_.key[order_[k]]) == cell_of(cur_.key[order_[k - 1]])) ++k;
     chunk_[c] = k;
   }
   chunk_[chunks_] = n;
@@ -379,8 +387,8 @@ void Engine::cut_chunks() {
     if (chunk_[c] == chunk_[c + 1]) {
       chunk_row0_[c] = chunk_row1_[c] = bj0_;
     } else {
-      const int j_first = static_cast<int>(cur_.key[order_[chunk_[c]]] / cells_x_);
-      const int j_last = static_cast<int>(cur_.key[order_[chunk_[c + 1] - 1]] / cells_x_);
+      const int j_first = static_cast<int>(cell_of(cur_.key[order_[chunk_[c]]]) / cells_x_);
+      const int j_last = static_cast<int>(cell_of(cur_.key[order_[chunk_[c + 1] - 1]]) / cells_x_);
       chunk_row0_[c] = std::max(j_first - 1, bj0_);
       chunk_row1_[c] = std::min(j_last + 3, bj1_);
     }
@@ -531,49 +539,22 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
   constexpr int W = Shape::kWidth;
   double* g = cleared_band(c);
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
-  const double ihx = inv_hx_, ihy = inv_hy_;
   const bool shape_functions = fields.mass, mass_momentum = fields.mass, forces = fields.forces;
   const bool forces_from_next = forces && !mass_momentum;
-  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const std::uint32_t p = order_[k];
-    double* wk = &weights_[k * 4 * W];
-    if (shape_functions) {
-      int bi = 0, bj = 0;
-      Shape::eval_xy((cur_.x[p] - grid_.x0) * ihx, (cur_.y[p] - grid_.y0) * ihy, cur_.lx[p], cur_.ly[p],
-                     cells_x_ - 1, cells_y_ - 1, ihx, ihy, bi, bj, wk);
-      base_[k] = bi + bj * nx_;
-      local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
-      if constexpr (Affine) {  // APIC: the first node's offset and the affine weights, for this step's phases
-        double* offset = &stencil_offset_[2 * k];
-        offset[0] = grid_.x0 + bi * grid_.hx - cur_.x[p];
-        offset[1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
-        affine_weights(Shape{}, wk, offset[0], offset[1], grid_.hx, grid_.hy, &affine_weights_[2 * W * k]);
-      }
-    }
-    const StencilWeights<W> w(wk);
-    const double m = cur_.mass[p];
-    double* band_row = g + local_[k];
-    if (mass_momentum) {
-      const double* B = &cur_.affine[4 * p];  // xx xy yx yy
-      const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], Double2{B[0], B[2]},
-                                                         Double2{B[1], B[3]},
-                                                         Affine ? &affine_weights_[2 * W * k] : nullptr, wk);
-      scatter_mass_momentum(band_row, row_stride, w, m, momentum);
-    }
-    if (forces) {
-      const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
-      const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
-      Double2 external{m * gx_, m * gy_};
-      if (!cur_.traction_slot.empty()) {
-        if (const std::int32_t slot = cur_.traction_slot[p]; slot >= 0) {
-          const Vec2 t = loads_.traction_force(slot, V, m / materials_[cur_.material[p]].density);
-          external += Double2{t.x(), t.y()};
-        }
-      }
-      scatter_forces(band_row, row_stride, w, external, V, sp[0], sp[1], sp[3]);
+  const std::size_t k1 = chunk_[c + 1];
+  for (std::size_t k = chunk_[c]; k < k1;) {
+    const bool run = shape_functions ? evaluate_shape_functions<Shape, Affine>(c, k) : run_lane_[k] == 0;
+    if (run) {
+      scatter_run<W, Affine>(k, g, row_stride, mass_momentum, forces, forces_from_next);
+      k += kRunLanes;
+    } else {
+      scatter_particle<Shape, Affine>(k, g, row_stride, mass_momentum, forces, forces_from_next);
+      ++k;
     }
   }
 }
+
+// scatter_particle, evaluate_shape_functions, evaluate_run and scatter_run: engine_p2g.inl (end of file).
 
 /// Sums the chunks' bands over one row of the active box, in chunk order (deterministic for any
 /// thread count).
@@ -684,22 +665,50 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   double* g = remap_momentum ? cleared_band(c) : nullptr;
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   const double h = std::min(grid_.hx, grid_.hy);
+  // Bilinear APIC reads C_p = sum v grad w^T (the velocity gradient) as well (velocity_transfer.hpp).
+  constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
+  // Stencil runs: the sums of the run's four particles, formed at its first, and MUSL's remapped
+  // momentum m v (APIC: and m B) of each, mapped at its last.
+  GridSums run_sums[kRunLanes];
+  Double4 run_mvx = splat4(0.0), run_mvy = splat4(0.0);
+  Double4 run_mB[4] = {splat4(0.0), splat4(0.0), splat4(0.0), splat4(0.0)};
+  std::size_t run_first = chunk_[c + 1];
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const std::uint32_t p = order_[k];
-    const double* wk = &weights_[k * 4 * W];
-    const StencilWeights<W> w(wk);
+    if (run_lane_[k] == 0) {
+      const StencilWeights4<W> w4(&weights_[4 * W * k]);
+      const auto first = static_cast<std::size_t>(base_[k]);
+      if constexpr (Affine) {
+        Double4 dxs4[W], dys4[W], ox = splat4(0.0), oy = ox;
+        for (int l = 0; l < kRunLanes; ++l) {
+          ox[l] = stencil_offset_[2 * (k + l)];
+          oy[l] = stencil_offset_[2 * (k + l) + 1];
+        }
+        for (int a = 0; a < W; ++a) {
+          dxs4[a] = ox + a * grid_.hx;
+          dys4[a] = oy + a * grid_.hy;
+        }
+        gather_updated_affine4(updated_.data(), first, static_cast<std::size_t>(nx_), w4, dxs4, dys4,
+                               strain_increments || kBilinearAffine, run_sums);
+      } else {
+        gather_updated4(updated_.data(), first, static_cast<std::size_t>(nx_), w4, strain_increments, run_sums);
+      }
+      run_first = k;
+    }
+    const bool in_run = k - run_first < static_cast<std::size_t>(kRunLanes);
+    // Outside a run a particle's weights are a block of its own (Engine::weights_).
+    const StencilWeights<W> w = in_run ? StencilWeights<W>() : StencilWeights<W>(&weights_[4 * W * k]);
     const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
     double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
-    if constexpr (Affine)
+    if (Affine && !in_run)
       for (int a = 0; a < W; ++a) {
         dxs[a] = offset[0] + a * grid_.hx;
         dys[a] = offset[1] + a * grid_.hy;
       }
-    // Bilinear APIC reads C_p = sum v grad w^T (the velocity gradient) as well (velocity_transfer.hpp).
-    constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
-    const GridSums sums = gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]),
-                                                    static_cast<std::size_t>(nx_), w, dxs, dys,
-                                                    strain_increments || kBilinearAffine);
+    const GridSums sums = in_run ? run_sums[k - run_first]
+                                 : gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]),
+                                                             static_cast<std::size_t>(nx_), w, dxs, dys,
+                                                             strain_increments || kBilinearAffine);
     if (strain_increments) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
     const double vgx = sums.v[0], vgy = sums.v[1];
     const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
@@ -714,14 +723,33 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     if constexpr (Affine)
       affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
                        grid_.hx, grid_.hy, &nxt_.affine[4 * k]);
-    if (remap_momentum) {
-      double B_old[4] = {0, 0, 0, 0};
+    double B_old[4] = {0, 0, 0, 0};
+    if constexpr (Affine) {
+      if (remap_momentum)
+        affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_,
+                         cells_x_ - 1, cells_y_ - 1, grid_.hx, grid_.hy, B_old);
+    }
+    if (remap_momentum && in_run) {
+      const std::size_t l = k - run_first;
+      const double m = cur_.mass[p];
+      run_mvx[l] = m * vx;
+      run_mvy[l] = m * vy;
       if constexpr (Affine)
-        affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_, cells_x_ - 1,
-                         cells_y_ - 1, grid_.hx, grid_.hy, B_old);
+        for (int e = 0; e < 4; ++e) run_mB[e][l] = m * B_old[e];
+      if (l == kRunLanes - 1) {
+        const StencilWeights4<W> w4(&weights_[4 * W * run_first]);
+        double* band_row = g + local_[run_first];
+        if constexpr (Affine)
+          scatter_affine_momentum4(
+              band_row, row_stride, w4,
+              AffineMomentum4<W>(run_mvx, run_mvy, run_mB, &affine_weights_[2 * W * run_first], w4), nullptr);
+        else
+          scatter_momentum4(band_row, row_stride, w4, run_mvx, run_mvy);
+      }
+    } else if (remap_momentum) {
       const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, Double2{B_old[0], B_old[2]},
                                                          Double2{B_old[1], B_old[3]},
-                                                         Affine ? &affine_weights_[2 * W * k] : nullptr, wk);
+                                                         Affine ? &affine_weights_[2 * W * k] : nullptr, w);
       scatter_momentum(g + local_[k], row_stride, w, momentum);
     }
     nxt_.x[k] = x;
@@ -816,8 +844,16 @@ template <class Shape>
 void Engine::compute_strain_increments(std::size_t c) {
   constexpr int W = Shape::kWidth;
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const StencilWeights<W> w(&weights_[k * 4 * W]);
-    gather_velocity_gradient(velocity_.data(), 2, static_cast<std::size_t>(base_[k]), static_cast<std::size_t>(nx_), w)
+    const auto first = static_cast<std::size_t>(base_[k]);
+    if (run_lane_[k] == 0) {
+      const VelocityGradient4 L = gather_velocity_gradient4(velocity_.data(), 2, first, static_cast<std::size_t>(nx_),
+                                                            StencilWeights4<W>(&weights_[4 * W * k]));
+      for (int l = 0; l < kRunLanes; ++l) L.lane(l).strain_increment(dt_, &dstrain_[3 * (k + l)]);
+      k += kRunLanes - 1;
+      continue;
+    }
+    const StencilWeights<W> w(&weights_[4 * W * k]);  // not in a run: a block of its own
+    gather_velocity_gradient(velocity_.data(), 2, first, static_cast<std::size_t>(nx_), w)
         .strain_increment(dt_, &dstrain_[3 * k]);
   }
 }
@@ -828,9 +864,9 @@ void Engine::apply_cell_remedy(std::size_t c) {
   const std::size_t k1 = chunk_[c + 1];
   std::size_t a = chunk_[c];
   while (a < k1) {
-    const std::int64_t key = cur_.key[order_[a]];
+    const std::int64_t this_cell = cell_of(cur_.key[order_[a]]);
     std::size_t b = a + 1;
-    while (b < k1 && cur_.key[order_[b]] == key) ++b;
+    while (b < k1 && cell_of(cur_.key[order_[b]]) == this_cell) ++b;
     const std::uint32_t* cell = &order_[a];
     core::apply_cell_remedy(smoothing_, &dstrain_[3 * a], b - a, [&](std::size_t i) { return cur_.volume[cell[i]]; });
     a = b;
@@ -846,8 +882,8 @@ void Engine::scatter_remedy_values(std::size_t c) {
   double* g = cleared_band(c);
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const double* wx = &weights_[k * 4 * W];
-    const double* wy = wx + W;
+    const StencilWeights<W> sw = stencil_weights<W>(k);
+    const double *wx = sw.wx, *wy = sw.wy;
     const std::uint32_t p = order_[k];
     const double w = proj.volume_weighted ? cur_.volume[p] : cur_.mass[p];
     double values[3];
@@ -889,8 +925,8 @@ void Engine::gather_remedy_values(std::size_t c) {
   constexpr int W = Shape::kWidth;
   const int nv = nodal_projection(smoothing_).values;
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const double* wx = &weights_[k * 4 * W];
-    const double* wy = wx + W;
+    const StencilWeights<W> sw = stencil_weights<W>(k);
+    const double *wx = sw.wx, *wy = sw.wy;
     double e[3] = {0, 0, 0};
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
     for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
@@ -1023,3 +1059,6 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
 }
 
 }  // namespace mpm::core
+
+// p2g per particle and per stencil run (in this translation unit for the CPU variants to inline).
+#include "mpm/core/engine_p2g.inl"

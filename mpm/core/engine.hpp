@@ -2,7 +2,7 @@
 // The explicit MPM engine behind mpm::core::Simulation (see simulation.hpp for the algorithm).
 //
 // Data layout (STYLE.md "Performance habits"): particles as structure-of-arrays, double-buffered: a step
-// reads the current arrays through `order_` (the live particles sorted by cell, then id) and writes the
+// reads the current arrays through `order_` (the live particles sorted by cell and stencil quadrant, then id) and writes the
 // next arrays in that order; the buffers are swapped only when the whole step succeeded, so after a
 // NumericalError the engine still holds the last good state. Shape-function weights are computed once
 // per particle per step and stored. The sorted particles are cut into chunks of ~2048 at cell
@@ -21,6 +21,7 @@
 #include "mpm/core/external_loads.hpp"
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
+#include "mpm/core/stencil_runs.hpp"
 #include "mpm/core/stress_remedy.hpp"
 #include "mpm/core/velocity_transfer.hpp"
 #include "mpm/io/deck.hpp"
@@ -66,7 +67,7 @@ struct ParticleArrays {
   std::vector<double> exx, eyy, gxy, epsv;
   std::vector<double> svars;          ///< kStateVariables per particle
   std::vector<double> affine;         ///< 4 per particle: the APIC matrix B_p (Bxx, Bxy, Byx, Byy), m^2/s
-  std::vector<std::int64_t> key;      ///< lattice cell index (x fastest), or kRemoved
+  std::vector<std::int64_t> key;      ///< sort key (Engine::cell_key): 4 x cell + stencil quadrant, or kRemoved
   /// Per particle: its slot in Engine::loads_ (external_loads.hpp), -1 no traction; empty without tractions.
   std::vector<std::int32_t> traction_slot;
   void resize(std::size_t n);
@@ -110,6 +111,17 @@ class Engine {
   void for_each_row(F&& f);  ///< static schedule over the rows of the active node box (no barrier)
   template <class Shape, bool Affine>
   void p2g_chunk(std::size_t c, GridFields fields);  ///< Affine: the APIC momentum (velocity_transfer.hpp)
+  template <class Shape, bool Affine>
+  bool evaluate_shape_functions(std::size_t c, std::size_t k);
+  template <class Shape, bool Affine>
+  bool evaluate_run(std::size_t c, std::size_t k);
+  void set_stencil(std::size_t c, std::size_t k, int bi, int bj, std::int32_t lane);
+  template <int W, bool Affine>
+  void scatter_run(std::size_t k, double* g, std::size_t row_stride, bool mass_momentum, bool forces,
+                   bool forces_from_next);
+  template <class Shape, bool Affine>
+  void scatter_particle(std::size_t k, double* g, std::size_t row_stride, bool mass_momentum, bool forces,
+                        bool forces_from_next);
   void reduce_row(int j, GridFields summed);
   void nodal_velocity_row(int j);
   void integrate_row(int j);
@@ -129,7 +141,7 @@ class Engine {
   double* cleared_band(std::size_t c);  ///< chunk c's band of the grid pool, zeroed
 
   // --- serial parts ---
-  void sort_particles();  ///< order_ from cur_.key: by cell, then id; drops removed particles; chunks
+  void sort_particles();  ///< order_ from cur_.key: by key, then id; drops removed particles; chunks
   void resort_particles(const std::vector<std::uint32_t>& previous);  ///< the same after a step, by a merge
   void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
@@ -137,7 +149,12 @@ class Engine {
   void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
   NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
+  /// The particle's sort key: 4 x its lattice cell (x fastest) + the quadrant of the cell whose node is
+  /// its nearest (uGIMP; else 0), so that the particles of a cell come in runs that share one stencil
+  /// (uGIMP: the 3 x 3 nodes around the nearest node; bilinear: the cell's 2 x 2).
+  /// cell_of(key) is the cell.
   std::int64_t cell_key(double x, double y) const;
+  static std::int64_t cell_of(std::int64_t key) { return key >> 2; }
 
   // grid
   io::Grid grid_;
@@ -194,10 +211,26 @@ class Engine {
 
   // particles
   ParticleArrays cur_, nxt_;
-  std::vector<std::uint32_t> order_;      ///< live particles (storage index in cur_), by cell then id
+  std::vector<std::uint32_t> order_;      ///< live particles (storage index in cur_), by key (cell_key) then id
   std::vector<std::int32_t> base_;        ///< per iteration index: stencil's first node
   std::vector<std::int32_t> local_;       ///< per iteration index: stencil's first node in the chunk's band
-  std::vector<double> weights_;           ///< per iteration index: wx, wy, dwx/h, dwy/h (4 * width)
+  /// The particles' weight blocks wx, wy, dwx/h, dwy/h (4 * width values per iteration index k, from
+  /// 4 * width * k on), interleaved within a stencil run (kRunLanes consecutive particles on one
+  /// stencil, from index k0): entry e of particle k0 + l at 4 * width * k0 + 4 e + l, so that the run
+  /// kernels load an entry of all four at once (stencil_runs.hpp).
+  std::vector<double> weights_;
+  std::vector<std::int32_t> run_lane_;  ///< per iteration index: its lane in its stencil run, -1 outside one
+  /// Whether p2g forms stencil runs: with 4-double vector registers (common::wide_vector_kernels); the
+  /// results are the same either way, bit for bit.
+  bool stencil_runs_ = true;
+  static constexpr int kRunLanes = 4;
+  /// The weights of the particle at iteration index k, in a run or not.
+  template <int W>
+  StencilWeights<W> stencil_weights(std::size_t k) const {
+    const std::int32_t lane = run_lane_[k];
+    return lane < 0 ? StencilWeights<W>(&weights_[4 * W * k])
+                    : StencilWeights<W>(&weights_[4 * W * (k - static_cast<std::size_t>(lane)) + lane], kRunLanes);
+  }
   std::vector<double> dstrain_;           ///< per iteration index: 3 (scratch for the stress update)
   std::vector<double> stencil_offset_;    ///< APIC, per iteration index: first stencil node - particle (x, y), m
   std::vector<double> affine_weights_;    ///< APIC, per iteration index: ax, ay (2 * width; p2g's, reread by the remap)
@@ -207,7 +240,7 @@ class Engine {
   std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
   std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
   std::vector<std::uint32_t> previous_order_;  ///< the step's order_, kept for resort_particles
-  std::vector<std::uint32_t> movers_;     ///< resort_particles: the particles that changed cell
+  std::vector<std::uint32_t> movers_;     ///< resort_particles: the particles that changed key
 
   // materials and analysis
   std::vector<Material> materials_;

@@ -18,4 +18,21 @@ inline Double2 select(Mask2 m, Double2 a, Double2 b) { return m ? a : b; }
 /// Per lane |v| (-0.0 stays -0.0: callers only compare it or use it where the sign of zero is lost).
 inline Double2 abs2(Double2 v) { return select(v < splat2(0.0), -v, v); }
 
+/// The same for a vector V of any width (Double2, or stencil_runs.hpp's Double4): every lane v, m ? a : b,
+/// and |v| per lane.
+template <class V>
+inline V splat(double v) {
+  V r;
+  for (int i = 0; i < static_cast<int>(sizeof(V) / sizeof(double)); ++i) r[i] = v;
+  return r;
+}
+template <class M, class V>
+inline V lane_select(M m, V a, V b) {
+  return m ? a : b;
+}
+template <class V>
+inline V lane_abs(V v) {
+  return lane_select(v < splat<V>(0.0), -v, v);
+}
+
 }  // namespace mpm::core

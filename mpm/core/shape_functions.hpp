@@ -30,8 +30,7 @@ struct LinearShape {
   static void eval(double s, double /*l*/, int max_cell, int& base, double w[kWidth], double dw[kWidth]) {
     // Truncation, then the clamp to cell 0: the same as floor + clamp, without the floor (a call or a
     // dozen instructions on the SSE2 baseline).
-    int c = static_cast<int>(s);
-    c = c < 0 ? 0 : (c > max_cell ? max_cell : c);
+    const int c = cell(s, max_cell);
     const double t = s - c;
     base = c;
     w[0] = 1.0 - t;
@@ -49,6 +48,16 @@ struct LinearShape {
       wk[2 * kWidth + a] *= ihx;
       wk[3 * kWidth + a] *= ihy;
     }
+  }
+  /// The stencil's first node (bi, bj), as eval_xy finds it.
+  static void first_node(double sx, double sy, int max_i, int max_j, int& bi, int& bj) {
+    bi = cell(sx, max_i);
+    bj = cell(sy, max_j);
+  }
+  /// The cell of s: truncation, then the clamp to cell 0 (eval).
+  static int cell(double s, int max_cell) {
+    const int c = static_cast<int>(s);
+    return c < 0 ? 0 : (c > max_cell ? max_cell : c);
   }
 };
 
@@ -92,23 +101,29 @@ struct GimpShape {
   /// pieces a node can reach are evaluated and one is selected per lane, each node()'s expression, so
   /// the values are node()'s bit for bit. For the stencil's middle node (the particle's nearest:
   /// |r| <= 1/2 <= 1 - l): the core or the hat piece.
-  static void middle_node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) {
-    const Double2 one = splat2(1.0);
-    const Double2 a = abs2(r);
-    const Mask2 hat = a > l;
-    w = select(hat, one - a, one - 0.5 * (r * r + l * l) * il);
-    dw = select(hat, -select(r < splat2(0.0), splat2(-1.0), one), -r * il);
+  template <class V>
+  static void middle_node(V r, V l, V il, V& w, V& dw) {
+    const V one = splat<V>(1.0);
+    const V a = lane_abs(r);
+    const auto hat = a > l;
+    w = lane_select(hat, one - a, one - 0.5 * (r * r + l * l) * il);
+    dw = lane_select(hat, -lane_select(r < splat<V>(0.0), splat<V>(-1.0), one), -r * il);
   }
+  static void middle_node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) { middle_node(r, l, il, w, dw); }
   /// The same for an outer node of the stencil at distance a = |r| in (1/2, 3/2] (a >= l: never the
   /// core piece) on the side of sign `sgn` (+1: the node before the particle, -1: the one after): the
   /// hat, edge or outside piece.
+  template <class V>
+  static void outer_node(V a, double sgn, V l, V il, V& w, V& dw) {
+    const V one = splat<V>(1.0), zero = splat<V>(0.0);
+    const V d = one + l - a;
+    const V w_edge = 0.25 * d * d * il, dw_edge = -0.5 * sgn * d * il;
+    const auto outside = a >= one + l, edge = a > one - l;
+    w = lane_select(outside, zero, lane_select(edge, w_edge, one - a));
+    dw = lane_select(outside, zero, lane_select(edge, dw_edge, splat<V>(-sgn)));
+  }
   static void outer_node2(Double2 a, double sgn, Double2 l, Double2 il, Double2& w, Double2& dw) {
-    const Double2 one = splat2(1.0), zero = splat2(0.0);
-    const Double2 d = one + l - a;
-    const Double2 w_edge = 0.25 * d * d * il, dw_edge = -0.5 * sgn * d * il;
-    const Mask2 outside = a >= one + l, edge = a > one - l;
-    w = select(outside, zero, select(edge, w_edge, one - a));
-    dw = select(outside, zero, select(edge, dw_edge, splat2(-sgn)));
+    outer_node(a, sgn, l, il, w, dw);
   }
   /// Both axes of a particle (see LinearShape::eval_xy), the same values as eval() per axis: each node
   /// takes only the pieces its position allows (the middle node core or hat, the outer ones hat, edge
@@ -132,6 +147,11 @@ struct GimpShape {
       wk[2 * kWidth + a] = dw[a][0];
       wk[3 * kWidth + a] = dw[a][1];
     }
+  }
+  /// The stencil's first node (bi, bj), as eval_xy finds it.
+  static void first_node(double sx, double sy, int /*max_i*/, int /*max_j*/, int& bi, int& bj) {
+    bi = nearest_node(sx) - 1;
+    bj = nearest_node(sy) - 1;
   }
 };
 

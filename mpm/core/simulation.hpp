@@ -11,7 +11,7 @@
 // update_grid = (nodal velocity,) Cundall damping, v += a dt, then at constrained nodes the friction and
 //               velocity constraints in momentum form, FLIP getting (v_new - v_old) / dt (nodal_constraints.hpp);
 // update_stress = strain increment, checkerboard remedy, material (one templated loop per material type).
-// Particles are stored as structure-of-arrays, sorted by cell then id each step (deterministic; the
+// Particles are stored as structure-of-arrays, sorted by cell (and stencil quadrant) then id each step (deterministic; the
 // order depends only on the state that the snapshot records, so a resume continues bit-identically).
 //
 // Semantics worth knowing (CB-Geo's where not stated):

@@ -39,19 +39,32 @@ inline void copy_doubles(const double* from, double* to) {
   if constexpr (N % 2 == 1) to[N - 1] = from[N - 1];
 }
 
-/// A particle's weights block [wx, wy, dwx, dwy] (W each; gradients per metre) in registers.
+/// A particle's weights block [wx, wy, dwx, dwy] (W each; gradients per metre) in registers; entry e
+/// of the block at wk[e * stride], stride 1 (a block of its own) or 4 (the blocks of a full stencil
+/// run interleaved, Engine::weights_), each a constant offset for the compiler.
 template <int W>
 struct StencilWeights {
   double wx[W], wy[W], dwx[W], dwy[W];
-  explicit StencilWeights(const double* wk) {
-    for (int a = 0; a < W; ++a) {
-      wx[a] = wk[a];
-      wy[a] = wk[W + a];
-      dwx[a] = wk[2 * W + a];
-      dwy[a] = wk[3 * W + a];
-    }
+  StencilWeights() = default;
+  explicit StencilWeights(const double* wk) { read<1>(wk); }
+  StencilWeights(const double* wk, int stride) {
+    if (stride == 4)
+      read<4>(wk);
+    else
+      read<1>(wk);
   }
   double N(int a, int b) const { return wx[a] * wy[b]; }
+
+ private:
+  template <int Stride>
+  void read(const double* wk) {
+    for (int a = 0; a < W; ++a) {
+      wx[a] = wk[a * Stride];
+      wy[a] = wk[(W + a) * Stride];
+      dwx[a] = wk[(2 * W + a) * Stride];
+      dwy[a] = wk[(3 * W + a) * Stride];
+    }
+  }
 };
 
 /// p2g of mass and momentum (Sulsky et al. 1994, eqs. 14-15): m N into slot 0, the momentum

@@ -32,6 +32,7 @@
 
 #include "mpm/core/lanes.hpp"
 #include "mpm/core/shape_functions.hpp"
+#include "mpm/core/stencil_kernels.hpp"
 #include "mpm/io/deck.hpp"
 
 namespace mpm::core {
@@ -60,17 +61,18 @@ struct VelocityTransfer {
 /// APIC's per-axis affine weights of one particle, `a` = ax[W] then ay[W], ax_k = wx_k d_k / D_xx with
 /// d_k = ox + k hx the signed distance node minus particle (m) and D_xx = sum_k wx_k d_k^2 (the axis's
 /// entry of D_p; y alike). uGIMP: from the weights, both axes at once in the lanes of one Double2 (each
-/// lane the scalar sums, in the same order). `wk` = the weights block (wx, wy, dwx, dwy; W each),
+/// lane the scalar sums, in the same order). `w` = the particle's weights,
 /// (ox, oy) = first stencil node minus particle. p2g forms them once per particle per step and MUSL's
 /// remap, at the same position, reads them back (Engine::affine_weights_).
-inline void affine_weights(GimpShape, const double* wk, double ox, double oy, double hx, double hy, double* a) {
+inline void affine_weights(GimpShape, const StencilWeights<GimpShape::kWidth>& w, double ox, double oy, double hx,
+                           double hy, double* a) {
   constexpr int W = GimpShape::kWidth;
   const Double2 o{ox, oy}, h{hx, hy};
   Double2 wd[W], d[W];
   Double2 D = splat2(0.0);
   for (int k = 0; k < W; ++k) {
     d[k] = o + static_cast<double>(k) * h;
-    wd[k] = Double2{wk[k], wk[W + k]} * d[k];
+    wd[k] = Double2{w.wx[k], w.wy[k]} * d[k];
     D += wd[k] * d[k];
   }
   const Double2 inv_D = splat2(1.0) / D;
@@ -82,10 +84,13 @@ inline void affine_weights(GimpShape, const double* wk, double ox, double oy, do
 }
 
 /// Bilinear: the gradients dw (per metre), equal to w d / D wherever D > 0 (see the file comment).
-inline void affine_weights(LinearShape, const double* wk, double /*ox*/, double /*oy*/, double /*hx*/, double /*hy*/,
-                           double* a) {
+inline void affine_weights(LinearShape, const StencilWeights<LinearShape::kWidth>& w, double /*ox*/, double /*oy*/,
+                           double /*hx*/, double /*hy*/, double* a) {
   constexpr int W = LinearShape::kWidth;
-  for (int k = 0; k < 2 * W; ++k) a[k] = wk[2 * W + k];
+  for (int k = 0; k < W; ++k) {
+    a[k] = w.dwx[k];
+    a[W + k] = w.dwy[k];
+  }
 }
 
 /// One axis's entry of APIC's D_p / h^2 = sum_a w_a (s_a - s)^2 for a particle at lattice coordinate s
@@ -156,15 +161,15 @@ struct MomentumContribution {
   Double2 wx[W] = {}, wy[W] = {};
 
   /// `b_x` = (Bxx, Byx) and `b_y` = (Bxy, Byy) the columns of the particle's matrix B_p, `a` its affine
-  /// weights ax[W], ay[W] (affine_weights) and `wk` its weights block (wx[W], wy[W], ...); all read only
-  /// when Affine.
-  MomentumContribution(double m, double vx, double vy, Double2 b_x, Double2 b_y, const double* a, const double* wk)
+  /// weights ax[W], ay[W] (affine_weights) and `w` its weights; all read only when Affine.
+  MomentumContribution(double m, double vx, double vy, Double2 b_x, Double2 b_y, const double* a,
+                       const StencilWeights<W>& w)
       : mv{m * vx, m * vy} {
     if constexpr (Affine) {
       const Double2 mb_x = m * b_x, mb_y = m * b_y;
       for (int k = 0; k < W; ++k) {
-        wx[k] = splat2(wk[k]);
-        wy[k] = splat2(wk[W + k]);
+        wx[k] = splat2(w.wx[k]);
+        wy[k] = splat2(w.wy[k]);
         column[k] = mv * wx[k] + mb_x * a[k];
         row[k] = mb_y * a[W + k];
       }

@@ -60,7 +60,7 @@ void Engine::set_up_wall_contacts() {
 
 void Engine::find_wall_contacts() {
   if (contact_nodes_.empty()) return;
-  const auto key_of = [&](std::uint32_t p) { return cur_.key[p]; };
+  const auto cell_of_particle = [&](std::uint32_t p) { return cell_of(cur_.key[p]); };
   const double h[2] = {grid_.hx, grid_.hy};
   const double origin[2] = {grid_.x0, grid_.y0};
   const int cells[2] = {cells_x_, cells_y_};
@@ -80,11 +80,11 @@ void Engine::find_wall_contacts() {
         int cell[2];
         cell[dn] = across;
         cell[dt] = side;
-        const std::int64_t key = static_cast<std::int64_t>(cell[0]) + static_cast<std::int64_t>(cell[1]) * cells_x_;
-        // order_ is sorted by cell: the cell's particles are one run of it.
-        const auto first = std::lower_bound(order_.begin(), order_.end(), key,
-                                            [&](std::uint32_t p, std::int64_t k) { return key_of(p) < k; });
-        for (auto it = first; it != order_.end() && key_of(*it) == key && !touching; ++it) {
+        const std::int64_t index = static_cast<std::int64_t>(cell[0]) + static_cast<std::int64_t>(cell[1]) * cells_x_;
+        // order_ is sorted by key, i.e. by cell first: the cell's particles are one run of it.
+        const auto first = std::lower_bound(order_.begin(), order_.end(), index,
+                                            [&](std::uint32_t p, std::int64_t k) { return cell_of_particle(p) < k; });
+        for (auto it = first; it != order_.end() && cell_of_particle(*it) == index && !touching; ++it) {
           const std::uint32_t p = *it;
           const double x = dn == 0 ? cur_.x[p] : cur_.y[p];
           const double half = (dn == 0 ? cur_.lx[p] : cur_.ly[p]) * h[dn];

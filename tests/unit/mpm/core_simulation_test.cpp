@@ -99,7 +99,7 @@ TEST(Simulation, MohrCoulombStateVariablesInSnapshot) {
 
 TEST(Simulation, MixedMaterialsMatchSingleMaterialRuns) {
   // Two blocks that share no node (4 cells apart), one Mohr-Coulomb (id 0) and one elastic (id 1),
-  // settle on a fixed base. Each node sum involves one block only, in the same (cell, id) order as in
+  // settle on a fixed base. Each node sum involves one block only, in the same (key, id) order as in
   // a run of that block alone, so the mixed-material path must reproduce both runs bit for bit.
   auto make = [](bool with_mc, bool with_elastic) {
     Deck deck;
