@@ -43,8 +43,9 @@ bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
   constexpr int W = Shape::kWidth;
   const double ihx = inv_hx_, ihy = inv_hy_;
   // Sorted by key: the fourth particle on has the first one's key only if the four between do. Runs
-  // only with 4-double registers (stencil_runs_) and without surface tractions (those particles go one
-  // by one), so that every particle the one-particle kernels of p2g and g2p see has blocks of its own.
+  // only with 4-double registers (stencil_runs_) and in decks without surface tractions (whose
+  // particles p2g maps one by one), so that every particle the one-particle kernels of p2g and g2p see
+  // has a block of its own.
   if (stencil_runs_ && cur_.traction_slot.empty() && k + kRunLanes <= chunk_[c + 1] &&
       cur_.key[order_[k + kRunLanes - 1]] == cur_.key[order_[k]] && evaluate_run<Shape, Affine>(c, k))
     return true;
