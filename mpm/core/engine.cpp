@@ -757,18 +757,24 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;
     nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
     const double speed = std::sqrt(vx * vx + vy * vy);
-    if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
-      report(c, k, ProblemKind::VelocityNotFinite, cur_.id[p], vx, vy);
-    } else if (!(speed * dt_ <= h)) {  // an overflowing speed too
-      report(c, k, ProblemKind::RunawayVelocity, cur_.id[p], speed, h / dt_);
-    }
     // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
     // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
     // support reaches the constrained nodes and one moving node: N = l/4 at the boundary, so it can
     // drift past it by a fraction of lp). Linear particles must stay inside the region.
     const double mx = gimp_margin_ * cur_.lx[p] * grid_.hx, my = gimp_margin_ * cur_.ly[p] * grid_.hy;
-    if (x < grid_.xmin - mx || x > grid_.xmax + mx || y < grid_.ymin - my || y > grid_.ymax + my ||
-        !std::isfinite(x) || !std::isfinite(y)) {
+    // False for a NaN coordinate; with a speed within one cell per step it implies finite values.
+    const bool on_grid =
+        x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
+    if (on_grid && speed * dt_ <= h) {
+      nxt_.key[k] = cell_key(x, y);
+      continue;
+    }
+    if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
+      report(c, k, ProblemKind::VelocityNotFinite, cur_.id[p], vx, vy);
+    } else if (!(speed * dt_ <= h)) {  // an overflowing speed too
+      report(c, k, ProblemKind::RunawayVelocity, cur_.id[p], speed, h / dt_);
+    }
+    if (!on_grid) {
       nxt_.key[k] = kRemoved;
       if (locate_) report(c, k, ProblemKind::LeftTheGrid, cur_.id[p], x, y);
     } else {
