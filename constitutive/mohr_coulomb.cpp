@@ -101,16 +101,6 @@ Spectral decompose(const PlaneStrainStress& s) {
   return sp;
 }
 
-/// decompose()'s largest and smallest principal values (sorted[0], sorted[2]; the middle one is left 0),
-/// the same expressions without the directions and their divisions: what the elastic test reads.
-Eigen::Vector3d principal_extremes(const PlaneStrainStress& s) {
-  const double center = 0.5 * (s[0] + s[1]);
-  const double half = 0.5 * (s[0] - s[1]);
-  const double radius = std::sqrt(half * half + s[3] * s[3]);
-  const double a = center + radius, b = center - radius, z = s[2];
-  return {z >= a ? z : a, 0.0, z >= b ? b : z};
-}
-
 PlaneStrainStress recompose(const Spectral& sp, const Eigen::Vector3d& sorted) {
   Eigen::Vector3d abz;
   for (int i = 0; i < 3; ++i) abz[sp.slot[i]] = sorted[i];
@@ -233,9 +223,9 @@ bool tension_active(double sin_phi, double cos_phi, const MohrCoulombStrength& s
 /// increment). The one place this test is made, for the fast path and for the full return alike.
 bool inside(const Eigen::Vector3d& t, double sin_phi, double cos_phi, const MohrCoulombStrength& st, bool tension) {
   const double two_c_cos = 2.0 * st.cohesion * cos_phi;
-  const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
   // Strictly inside needs no tolerance (tol >= 0): the common case, without the stress scale.
-  if (f_main <= 0.0 && (!tension || t[0] - st.tension_cutoff <= 0.0)) return true;
+  if (strictly_inside(t[0], t[2], sin_phi, two_c_cos, tension, st.tension_cutoff)) return true;
+  const double f_main = (t[0] - t[2]) + (t[0] + t[2]) * sin_phi - two_c_cos;
   // Each test with the scale of what it compares: a cutoff far above the stresses (a Tresca material given
   // T = 1e30 for "none") must not widen the shear test (it made every state elastic).
   const double tol = 1e-12 * std::max({std::abs(t[0]), std::abs(t[2]), two_c_cos});
@@ -351,15 +341,19 @@ MohrCoulombReturnMap::MohrCoulombReturnMap(const IsotropicElasticity& el, const 
   d->planes = make_planes(el, surface);
   for (std::size_t i = 0; i < kCandidates.size(); ++i)
     d->solves[i] = solve_of(d->planes, kCandidates[i].ids.data(), kCandidates[i].k);
+  sin_phi_ = surface.sin_phi;
+  two_c_cos_phi_ = 2.0 * surface.strength.cohesion * surface.cos_phi;  // inside()'s expression
+  tension_cutoff_ = surface.strength.tension_cutoff;
+  tension_ = d->planes.tension;
   data_ = std::move(d);
 }
 
 const MohrCoulombSurface& MohrCoulombReturnMap::surface() const { return data_->surface; }
 const IsotropicElasticity& MohrCoulombReturnMap::elasticity() const { return data_->elasticity; }
 
-bool MohrCoulombReturnMap::admits(const PlaneStrainStress& trial) const {
+bool MohrCoulombReturnMap::admits_at_round_off(const PrincipalExtremes& t) const {
   const Data& d = *data_;
-  return inside(principal_extremes(trial), d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension);
+  return inside({t.s1, 0.0, t.s3}, d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension);
 }
 
 CPU_VARIANTS MohrCoulombUpdate MohrCoulombReturnMap::apply_plastic(const PlaneStrainStress& trial) const {

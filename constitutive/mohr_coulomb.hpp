@@ -21,6 +21,7 @@
 // Hot path: no allocation, no virtual call, no exception. The elastic test is a few flops; plastic states
 // solve at most a 3x3 linear system per active-set candidate.
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -80,15 +81,47 @@ struct MohrCoulombUpdate {
   ReturnRegion region;
 };
 
+/// The moduli of the plane-strain elastic trial: lambda = K - 2G/3, 2G and G, formed once per material.
+struct PlaneStrainStiffness {
+  double lambda = 0.0, two_g = 0.0, g = 0.0;
+  PlaneStrainStiffness() = default;
+  explicit PlaneStrainStiffness(const IsotropicElasticity& el)
+      : lambda(el.bulk_modulus - 2.0 * el.shear_modulus / 3.0), two_g(2.0 * el.shear_modulus), g(el.shear_modulus) {}
+};
+
 /// Elastic trial stress: stress + D dstrain with dezz = 0, so dszz = (K - 2G/3)(dexx + deyy).
 /// (Inline: the MPM calls it once per particle per step.)
 inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
-                                       const IsotropicElasticity& el) {
-  const double g = el.shear_modulus;
-  const double lambda = el.bulk_modulus - 2.0 * g / 3.0;
+                                       const PlaneStrainStiffness& d) {
   const double dvol = dstrain[0] + dstrain[1];
-  return {stress[0] + lambda * dvol + 2.0 * g * dstrain[0], stress[1] + lambda * dvol + 2.0 * g * dstrain[1],
-          stress[2] + lambda * dvol, stress[3] + g * dstrain[2]};
+  return {stress[0] + d.lambda * dvol + d.two_g * dstrain[0], stress[1] + d.lambda * dvol + d.two_g * dstrain[1],
+          stress[2] + d.lambda * dvol, stress[3] + d.g * dstrain[2]};
+}
+inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
+                                       const IsotropicElasticity& el) {
+  return elastic_trial(stress, dstrain, PlaneStrainStiffness(el));
+}
+
+/// The largest and smallest principal values s1, s3 of a plane-strain stress (the in-plane Mohr circle
+/// and szz), without the directions: what the elastic test reads.
+struct PrincipalExtremes {
+  double s1, s3;
+  explicit PrincipalExtremes(const PlaneStrainStress& s) {
+    const double center = 0.5 * (s[0] + s[1]);
+    const double half = 0.5 * (s[0] - s[1]);
+    const double radius = std::sqrt(half * half + s[3] * s[3]);
+    const double a = center + radius, b = center - radius, z = s[2];
+    s1 = z >= a ? z : a;
+    s3 = z >= b ? b : z;
+  }
+};
+
+/// The elastic test without tolerance ([SPO] Box 8.4 (ii)): the main plane f = (s1 - s3) + (s1 + s3) sin phi
+/// - 2 c cos phi <= 0 and, where the cutoff is in force, s1 <= T. True for most states; a state on the
+/// surface within round-off needs the full test (inside(), mohr_coulomb.cpp).
+inline bool strictly_inside(double s1, double s3, double sin_phi, double two_c_cos_phi, bool tension,
+                            double tension_cutoff) {
+  return (s1 - s3) + (s1 + s3) * sin_phi - two_c_cos_phi <= 0.0 && (!tension || s1 - tension_cutoff <= 0.0);
 }
 
 /// Elastic predictor + closest-point return in principal stress space ([SPO] Boxes 8.4-8.6; [CDA])
@@ -117,15 +150,22 @@ class MohrCoulombReturnMap {
   MohrCoulombUpdate apply(const PlaneStrainStress& trial_stress) const;
   /// True when apply() would find the trial elastic (the same test, without the spectral directions):
   /// the cheap first check of a stress update, where most points are elastic.
-  bool admits(const PlaneStrainStress& trial_stress) const;
+  bool admits(const PlaneStrainStress& trial_stress) const {
+    const PrincipalExtremes t(trial_stress);
+    return strictly_inside(t.s1, t.s3, sin_phi_, two_c_cos_phi_, tension_, tension_cutoff_) || admits_at_round_off(t);
+  }
   /// apply() for a trial that admits() refused (the elastic test is not repeated).
   MohrCoulombUpdate apply_plastic(const PlaneStrainStress& trial_stress) const;
   const MohrCoulombSurface& surface() const;
   const IsotropicElasticity& elasticity() const;
 
  private:
+  bool admits_at_round_off(const PrincipalExtremes& t) const;
   struct Data;
   std::shared_ptr<const Data> data_;
+  // What admits() reads, next to the pointer (the surface's, the cutoff's state of the planes).
+  double sin_phi_ = 0.0, two_c_cos_phi_ = 0.0, tension_cutoff_ = 0.0;
+  bool tension_ = false;
 };
 
 /// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress

@@ -18,6 +18,7 @@ MohrCoulomb MohrCoulomb::from(const io::MaterialSpec& spec) {
   MohrCoulomb m;
   m.bulk = bulk_modulus(spec);
   m.shear = shear_modulus(spec);
+  m.stiffness = constitutive::PlaneStrainStiffness({m.bulk, m.shear});
   m.phi_peak = spec.friction;
   m.psi_peak = spec.dilation;
   m.c_peak = spec.cohesion;
@@ -63,8 +64,7 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
   }
   const constitutive::PlaneStrainStress s = Eigen::Map<const Eigen::Vector4d>(stress);
   const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
-  const constitutive::IsotropicElasticity el{bulk, shear};
-  const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, el);
+  const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, stiffness);
   const constitutive::MohrCoulombStrength strength{svars[0], svars[1], svars[2], tension_cutoff};
   // The maps were built from peak_surface and residual_surface: their strengths, without a call.
   const auto is_strength_of = [&](const constitutive::MohrCoulombReturnMap& map,
@@ -97,7 +97,7 @@ void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) c
       surface = constitutive::MohrCoulombSurface(strength);
     }
     surface.strength = strength;  // the trigonometry depends on the angles only
-    r = constitutive::mohr_coulomb_return(trial, el, surface);
+    r = constitutive::mohr_coulomb_return(trial, {bulk, shear}, surface);
   }
   out = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them

@@ -43,6 +43,7 @@ struct LinearElastic {
 /// reached at the start of the step (softening applied before the return).
 struct MohrCoulomb {
   double bulk = 0, shear = 0;
+  constitutive::PlaneStrainStiffness stiffness;  ///< of bulk and shear, for the elastic trial
   double phi_peak = 0, psi_peak = 0, c_peak = 0;
   double phi_residual = 0, psi_residual = 0, c_residual = 0;
   double pdstrain_peak = 0, pdstrain_residual = 0;
