@@ -149,6 +149,7 @@ struct CandidateSolve {
   bool singular = false;
   std::array<int, 6> others{};
   int other_count = 0;
+  int shear_other_count = 0;  ///< the pyramid's planes among the others (they come first)
 };
 
 CandidateSolve solve_of(const Planes& p, const int* ids, int k) {
@@ -174,6 +175,7 @@ CandidateSolve solve_of(const Planes& p, const int* ids, int k) {
     if (j >= kT1 && !p.tension) break;
     if (std::find(ids, ids + k, j) != ids + k) continue;
     cs.others[static_cast<std::size_t>(cs.other_count++)] = j;
+    if (j < kT1) cs.shear_other_count = cs.other_count;
   }
   return cs;
 }
@@ -181,16 +183,17 @@ CandidateSolve solve_of(const Planes& p, const int* ids, int k) {
 /// One active-set candidate: solve sum_l (m_j . D n_l) dgamma_l = m_j . s_trial - r_j ([SPO] sec. 8.2,
 /// [CDA]), then check dgamma >= 0, the principal order and every other plane.
 /// Returns the violation measure (<= 0 when admissible); the stress in `out`.
-double try_active_set(const Planes& p, const CandidateSolve& cs, const Eigen::Vector3d& trial, const int* ids, int k,
+template <int k>
+double try_active_set(const Planes& p, const CandidateSolve& cs, const Eigen::Vector3d& trial, const int* ids,
                       double tol, double gamma_scale, Eigen::Vector3d& out) {
   if (cs.singular) return std::numeric_limits<double>::infinity();
   Eigen::Vector3d b = Eigen::Vector3d::Zero();
   for (int j = 0; j < k; ++j) b[j] = p.m[ids[j]].dot(trial) - p.r[ids[j]];
   const Eigen::Matrix3d& a = cs.a;
   Eigen::Vector3d gamma = Eigen::Vector3d::Zero();
-  if (k == 1) {
+  if constexpr (k == 1) {
     gamma[0] = b[0] / a(0, 0);
-  } else if (k == 2) {
+  } else if constexpr (k == 2) {
     gamma[0] = (a(1, 1) * b[0] - a(0, 1) * b[1]) / cs.det;
     gamma[1] = (a(0, 0) * b[1] - a(1, 0) * b[0]) / cs.det;
   } else {
@@ -204,11 +207,23 @@ double try_active_set(const Planes& p, const CandidateSolve& cs, const Eigen::Ve
   }
   violation = std::max(violation, out[1] - out[0]);
   violation = std::max(violation, out[2] - out[1]);
-  for (int i = 0; i < cs.other_count; ++i) {
+  for (int i = 0; i < cs.shear_other_count; ++i) {
     const int j = cs.others[static_cast<std::size_t>(i)];
     violation = std::max(violation, p.m[j].dot(out) - p.r[j]);
   }
+  // A Rankine plane's m is the unit vector e_i: its dot product is out_i exactly.
+  for (int i = cs.shear_other_count; i < cs.other_count; ++i) {
+    const int j = cs.others[static_cast<std::size_t>(i)];
+    violation = std::max(violation, out[j - kT1] - p.r[j]);
+  }
   return violation - tol;
+}
+/// try_active_set<k> for a run-time count of active planes.
+double try_active_set(const Planes& p, const CandidateSolve& cs, const Eigen::Vector3d& trial, const int* ids, int k,
+                      double tol, double gamma_scale, Eigen::Vector3d& out) {
+  if (k == 1) return try_active_set<1>(p, cs, trial, ids, tol, gamma_scale, out);
+  if (k == 2) return try_active_set<2>(p, cs, trial, ids, tol, gamma_scale, out);
+  return try_active_set<3>(p, cs, trial, ids, tol, gamma_scale, out);
 }
 
 /// Tension cutoff in force: finite and below the apex c cot(phi) ([CDA]).
