@@ -74,6 +74,32 @@ struct StencilWeights4 {
 /// Adds the four lanes of v to *g in lane (particle) order, as four one-particle kernels would.
 inline void add_lanes(double* g, Double4 v) { *g = *g + v[0] + v[1] + v[2] + v[3]; }
 
+/// add_lanes for the consecutive nodal values g[0], g[1] with the particles' contributions v0, v1: a
+/// 4 x 2 transpose puts particle l's pair in one Double2, so the pair takes each particle's sum in one
+/// operation, in particle order: each value is add_lanes' bit for bit.
+inline void add_lanes(double* g, Double4 v0, Double4 v1) {
+  const Double4 first = __builtin_shufflevector(v0, v1, 0, 4, 1, 5);   // particles 0 and 1
+  const Double4 second = __builtin_shufflevector(v0, v1, 2, 6, 3, 7);  // particles 2 and 3
+  Double2 sum;
+  __builtin_memcpy(&sum, g, sizeof sum);
+  sum = sum + __builtin_shufflevector(first, first, 0, 1) + __builtin_shufflevector(first, first, 2, 3) +
+        __builtin_shufflevector(second, second, 0, 1) + __builtin_shufflevector(second, second, 2, 3);
+  __builtin_memcpy(g, &sum, sizeof sum);
+}
+
+/// add_lanes for the consecutive nodal values g[0..2] (a node's mass and momentum) with v0, v1, v2: a
+/// 4 x 3 transpose, each particle's three contributions in one Double4 (its fourth lane reads g[3] and is
+/// not written back); each value add_lanes' bit for bit.
+inline void add_lanes(double* g, Double4 v0, Double4 v1, Double4 v2) {
+  const Double4 even = __builtin_shufflevector(v0, v1, 0, 4, 2, 6);  // v0, v1 of particles 0 and 2
+  const Double4 odd = __builtin_shufflevector(v0, v1, 1, 5, 3, 7);   // of particles 1 and 3
+  Double4 sum = load4(g);
+  sum = sum + __builtin_shufflevector(even, v2, 0, 1, 4, 4) + __builtin_shufflevector(odd, v2, 0, 1, 5, 5) +
+        __builtin_shufflevector(even, v2, 2, 3, 6, 6) + __builtin_shufflevector(odd, v2, 2, 3, 7, 7);
+  __builtin_memcpy(g, &sum, 2 * sizeof(double));
+  g[2] = sum[2];
+}
+
 /// scatter_mass_momentum for the four particles of a run, FLIP / PIC (momentum m v N): m, and
 /// mvx = m vx, mvy = m vy per lane.
 template <int W>
@@ -83,9 +109,7 @@ inline void scatter_mass_momentum4(double* band_row, std::size_t row_stride, con
     double* gn = band_row;
     for (int a = 0; a < W; ++a, gn += 5) {
       const Double4 N = w.wx[a] * w.wy[b];
-      add_lanes(gn, m * N);
-      add_lanes(gn + 1, mvx * N);
-      add_lanes(gn + 2, mvy * N);
+      add_lanes(gn, m * N, mvx * N, mvy * N);
     }
   }
 }
@@ -98,8 +122,7 @@ inline void scatter_momentum4(double* band_row, std::size_t row_stride, const St
     double* gn = band_row;
     for (int a = 0; a < W; ++a, gn += 5) {
       const Double4 N = w.wx[a] * w.wy[b];
-      add_lanes(gn + 1, mvx * N);
-      add_lanes(gn + 2, mvy * N);
+      add_lanes(gn + 1, mvx * N, mvy * N);
     }
   }
 }
@@ -120,8 +143,8 @@ inline void scatter_forces4(double* band_row, std::size_t row_stride, const Sten
   for (int b = 0; b < W; ++b, band_row += row_stride) {
     double* gn = band_row;
     for (int a = 0; a < W; ++a, gn += 5) {
-      add_lanes(gn + 3, w.wy[b] * with_wy_x[a] - w.dwy[b] * with_dwy_x[a]);
-      add_lanes(gn + 4, w.wy[b] * with_wy_y[a] - w.dwy[b] * with_dwy_y[a]);
+      add_lanes(gn + 3, w.wy[b] * with_wy_x[a] - w.dwy[b] * with_dwy_x[a],
+                w.wy[b] * with_wy_y[a] - w.dwy[b] * with_dwy_y[a]);
     }
   }
 }
@@ -294,9 +317,12 @@ inline void scatter_affine_momentum4(double* band_row, std::size_t row_stride, c
   for (int b = 0; b < W; ++b, band_row += row_stride) {
     double* gn = band_row;
     for (int a = 0; a < W; ++a, gn += 5) {
-      if (mass) add_lanes(gn, *mass * (w.wx[a] * w.wy[b]));
-      add_lanes(gn + 1, momentum.column_x[a] * w.wy[b] + momentum.row_x[b] * w.wx[a]);
-      add_lanes(gn + 2, momentum.column_y[a] * w.wy[b] + momentum.row_y[b] * w.wx[a]);
+      const Double4 px = momentum.column_x[a] * w.wy[b] + momentum.row_x[b] * w.wx[a];
+      const Double4 py = momentum.column_y[a] * w.wy[b] + momentum.row_y[b] * w.wx[a];
+      if (mass)
+        add_lanes(gn, *mass * (w.wx[a] * w.wy[b]), px, py);
+      else
+        add_lanes(gn + 1, px, py);
     }
   }
 }
