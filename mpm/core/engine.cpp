@@ -761,10 +761,13 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
     // support reaches the constrained nodes and one moving node: N = l/4 at the boundary, so it can
     // drift past it by a fraction of lp). Linear particles must stay inside the region.
-    const double mx = gimp_margin_ * cur_.lx[p] * grid_.hx, my = gimp_margin_ * cur_.ly[p] * grid_.hy;
-    // False for a NaN coordinate; with a speed within one cell per step it implies finite values.
+    // False for a NaN coordinate; with a speed within one cell per step it implies finite values. Inside
+    // the region itself (most particles) the margin (>= 0) is not needed.
+    const auto within = [&](double mx, double my) {
+      return x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
+    };
     const bool on_grid =
-        x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
+        within(0.0, 0.0) || within(gimp_margin_ * cur_.lx[p] * grid_.hx, gimp_margin_ * cur_.ly[p] * grid_.hy);
     if (on_grid && speed * dt_ <= h) {
       nxt_.key[k] = cell_key(x, y);
       continue;
