@@ -78,12 +78,12 @@ inline void add_lanes(double* g, Double4 v) { *g = *g + v[0] + v[1] + v[2] + v[3
 /// 4 x 2 transpose puts particle l's pair in one Double2, so the pair takes each particle's sum in one
 /// operation, in particle order: each value is add_lanes' bit for bit.
 inline void add_lanes(double* g, Double4 v0, Double4 v1) {
-  const Double4 first = __builtin_shufflevector(v0, v1, 0, 4, 1, 5);   // particles 0 and 1
-  const Double4 second = __builtin_shufflevector(v0, v1, 2, 6, 3, 7);  // particles 2 and 3
+  const Double4 even = __builtin_shufflevector(v0, v1, 0, 4, 2, 6);  // particles 0 and 2
+  const Double4 odd = __builtin_shufflevector(v0, v1, 1, 5, 3, 7);   // particles 1 and 3
   Double2 sum;
   __builtin_memcpy(&sum, g, sizeof sum);
-  sum = sum + __builtin_shufflevector(first, first, 0, 1) + __builtin_shufflevector(first, first, 2, 3) +
-        __builtin_shufflevector(second, second, 0, 1) + __builtin_shufflevector(second, second, 2, 3);
+  sum = sum + __builtin_shufflevector(even, even, 0, 1) + __builtin_shufflevector(odd, odd, 0, 1) +
+        __builtin_shufflevector(even, even, 2, 3) + __builtin_shufflevector(odd, odd, 2, 3);
   __builtin_memcpy(g, &sum, sizeof sum);
 }
 
