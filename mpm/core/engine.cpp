@@ -274,9 +274,8 @@ std::int64_t Engine::cell_key(double x, double y) const {
 // Sorting: order_ = live particles by (key, id), the key the cell and its stencil quadrant (cell_key).
 // A counting sort by key of the previous order, then an insertion sort by id inside each key's run
 // (nearly sorted already); after a step in which few particles changed key, a merge of those few into
-// the rest (resort_particles). The result depends only on the particle state, so a resumed run
-// iterates in the same order as the uninterrupted one.
-// Serial: it is the one phase of a step the threads do not share.
+// the rest (resort_particles, shared by the threads: order_merge.hpp). The result depends only on the
+// particle state, so a resumed run iterates in the same order as the uninterrupted one.
 // ---------------------------------------------------------------------------------------------------
 void Engine::sort_particles() {
   std::fill(bucket_.begin(), bucket_.end(), 0u);
@@ -320,12 +319,13 @@ void Engine::sort_particles() {
 /// index in nxt_ (the previous buffer), where its old key is.
 void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
   const std::size_t n_old = previous.size();
-  const auto kept_key = [&](std::size_t k) { return cur_.key[k] == nxt_.key[previous[k]]; };
-  movers_.clear();
-  for (std::size_t k = 0; k < n_old; ++k)
-    if (cur_.key[k] != kRemoved && !kept_key(k)) movers_.push_back(static_cast<std::uint32_t>(k));
+  const auto status = [&](std::size_t k) {
+    if (cur_.key[k] == kRemoved) return OrderMerge::Status::Removed;
+    return cur_.key[k] == nxt_.key[previous[k]] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved;
+  };
+  const std::size_t movers = merge_.find_movers(n_old, threads_, status);
   order_.resize(n_old);
-  if (movers_.size() > n_old / 16) {  // many: the counting sort is cheaper than sorting them
+  if (movers > n_old / 16) {  // many: the counting sort is cheaper than sorting them
     for (std::size_t k = 0; k < n_old; ++k) order_[k] = static_cast<std::uint32_t>(k);
     sort_particles();
     return;
@@ -333,16 +333,7 @@ void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
   const auto before = [&](std::uint32_t a, std::uint32_t b) {
     return cur_.key[a] != cur_.key[b] ? cur_.key[a] < cur_.key[b] : cur_.id[a] < cur_.id[b];
   };
-  std::sort(movers_.begin(), movers_.end(), before);
-  std::size_t n = 0, m = 0;
-  for (std::size_t k = 0; k < n_old; ++k) {
-    if (cur_.key[k] == kRemoved || !kept_key(k)) continue;
-    const auto p = static_cast<std::uint32_t>(k);
-    while (m < movers_.size() && before(movers_[m], p)) order_[n++] = movers_[m++];
-    order_[n++] = p;
-  }
-  while (m < movers_.size()) order_[n++] = movers_[m++];
-  order_.resize(n);
+  order_.resize(merge_.merge(order_.data(), status, before));
   cut_chunks();
 }
 

@@ -21,6 +21,7 @@
 #include "mpm/core/external_loads.hpp"
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
+#include "mpm/core/order_merge.hpp"
 #include "mpm/core/stencil_runs.hpp"
 #include "mpm/core/stress_remedy.hpp"
 #include "mpm/core/velocity_transfer.hpp"
@@ -240,7 +241,7 @@ class Engine {
   std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
   std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
   std::vector<std::uint32_t> previous_order_;  ///< the step's order_, kept for resort_particles
-  std::vector<std::uint32_t> movers_;     ///< resort_particles: the particles that changed key
+  OrderMerge merge_;                      ///< resort_particles: the particles that changed key, merged in
 
   // materials and analysis
   std::vector<Material> materials_;
