@@ -333,7 +333,7 @@ void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
   const auto before = [&](std::uint32_t a, std::uint32_t b) {
     return cur_.key[a] != cur_.key[b] ? cur_.key[a] < cur_.key[b] : cur_.id[a] < cur_.id[b];
   };
-  order_.resize(merge_.merge(order_.data(), status, before));
+  order_.resize(merge_.merge(order_.data(), [&](std::size_t k) { return cur_.key[k] == kRemoved; }, before));
   cut_chunks();
 }
 

@@ -48,10 +48,10 @@ class OrderMerge {
     return movers_.size();
   }
 
-  /// Pass 2: the movers sorted by `before` and merged with the kept particles (the same `status`, in
-  /// order along k) into out[0 .. count); returns the count.
-  template <class StatusOf, class Before>
-  std::size_t merge(std::uint32_t* out, StatusOf status, Before before) {
+  /// Pass 2: the movers sorted by `before` and merged with the kept particles (in order along k: those
+  /// neither removed(k) nor among pass 1's movers) into out[0 .. count); returns the count.
+  template <class Removed, class Before>
+  std::size_t merge(std::uint32_t* out, Removed removed, Before before) {
     std::sort(movers_.begin(), movers_.end(), before);
     // Thread t's movers: [ranges_[t].first_mover, ranges_[t + 1].first_mover); the first thread's start at 0.
     std::size_t next = movers_.size(), kept_before = 0;
@@ -79,9 +79,14 @@ class OrderMerge {
     for (std::size_t t = 0; t < ranges_.size(); ++t) {
       const Range& r = ranges_[t];
       std::size_t o = r.out, m = r.first_mover;
+      auto own_mover = std::lower_bound(r.movers.begin(), r.movers.end(), static_cast<std::uint32_t>(r.first_kept));
       if (r.kept > 0)
         for (std::size_t k = r.first_kept; k < r.end; ++k) {
-          if (status(k) != Status::Kept) continue;
+          if (own_mover != r.movers.end() && *own_mover == k) {
+            ++own_mover;
+            continue;
+          }
+          if (removed(k)) continue;
           const auto p = static_cast<std::uint32_t>(k);
           while (m < r.last_mover && before(movers[m], p)) out[o++] = movers[m++];
           out[o++] = p;

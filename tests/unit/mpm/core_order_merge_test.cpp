@@ -68,7 +68,7 @@ std::vector<std::uint32_t> merged_order(const Outcome& o, int threads, std::size
   const std::size_t m = merge.find_movers(o.key.size(), threads, status);
   if (movers) *movers = m;
   std::vector<std::uint32_t> out(o.key.size());
-  out.resize(merge.merge(out.data(), status, before));
+  out.resize(merge.merge(out.data(), [&](std::size_t k) { return o.key[k] < 0; }, before));
   return out;
 }
 
