@@ -341,16 +341,20 @@ void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
 void Engine::cut_chunks() {
   const std::size_t n = order_.size();
   int cmin_i = cells_x_, cmax_i = -1, cmin_j = cells_y_, cmax_j = -1;
-  std::int64_t previous_cell = kRemoved;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::int64_t cell = cell_of(cur_.key[order_[k]]);
-    if (cell == previous_cell) continue;
-    previous_cell = cell;
-    const int i = static_cast<int>(cell % cells_x_), j = static_cast<int>(cell / cells_x_);
-    cmin_i = std::min(cmin_i, i);
-    cmax_i = std::max(cmax_i, i);
-    cmin_j = std::min(cmin_j, j);
-    cmax_j = std::max(cmax_j, j);
+#pragma omp parallel num_threads(threads_) reduction(min : cmin_i, cmin_j) reduction(max : cmax_i, cmax_j)
+  {
+    std::int64_t previous_cell = kRemoved;  // a cell's particles are consecutive: one division per cell
+#pragma omp for schedule(static)
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::int64_t cell = cell_of(cur_.key[order_[k]]);
+      if (cell == previous_cell) continue;
+      previous_cell = cell;
+      const int i = static_cast<int>(cell % cells_x_), j = static_cast<int>(cell / cells_x_);
+      cmin_i = std::min(cmin_i, i);
+      cmax_i = std::max(cmax_i, i);
+      cmin_j = std::min(cmin_j, j);
+      cmax_j = std::max(cmax_j, j);
+    }
   }
   // Active node box: every node a particle's stencil can reach (cell - 1 .. cell + 2).
   if (n == 0) {
