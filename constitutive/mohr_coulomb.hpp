@@ -163,7 +163,7 @@ class MohrCoulombReturnMap {
   bool admits_at_round_off(const PrincipalExtremes& t) const;
   struct Data;
   std::shared_ptr<const Data> data_;
-  // What admits() reads, next to the pointer (the surface's, the cutoff's state of the planes).
+  // What admits() reads, beside the pointer: sin phi, 2 c cos phi, the cutoff and whether it is in force.
   double sin_phi_ = 0.0, two_c_cos_phi_ = 0.0, tension_cutoff_ = 0.0;
   bool tension_ = false;
 };

@@ -755,9 +755,9 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
     // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
     // support reaches the constrained nodes and one moving node: N = l/4 at the boundary, so it can
-    // drift past it by a fraction of lp). Linear particles must stay inside the region.
-    // False for a NaN coordinate; with a speed within one cell per step it implies finite values. Inside
-    // the region itself (most particles) the margin (>= 0) is not needed.
+    // drift past it by a fraction of lp). Linear particles must stay inside the region. The test is
+    // false for a NaN coordinate, so with a speed within one cell per step it implies finite values;
+    // inside the region itself (most particles) the margin (>= 0) is not needed.
     const auto within = [&](double mx, double my) {
       return x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
     };
