@@ -33,8 +33,7 @@ std::string num(double v) { return common::number_text(v, 10); }
 void ParticleArrays::resize(std::size_t n) {
   id.resize(n);
   material.resize(n);
-  for (auto* v : {&mass, &volume, &nsize_x, &nsize_y, &lx, &ly, &x, &y, &ux, &uy, &vx, &vy, &exx, &eyy, &gxy,
-                  &epsv})
+  for (auto* v : {&mass, &volume, &lx, &ly, &x, &y, &ux, &uy, &vx, &vy, &exx, &eyy, &gxy, &epsv})
     v->resize(n);
   stress.resize(4 * n);
   affine.resize(4 * n);
@@ -192,12 +191,12 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
     cur_.volume[p] = r.volume > 0 ? r.volume : grid_.hx * grid_.hy / count;
     cur_.mass[p] = r.volume > 0 && r.mass > 0 ? r.mass : mat.density * cur_.volume[p];
     const bool sized = r.nsize_x > 0 && r.nsize_y > 0;
-    cur_.nsize_x[p] = sized ? r.nsize_x : 2.0 / std::sqrt(count);
-    cur_.nsize_y[p] = sized ? r.nsize_y : 2.0 / std::sqrt(count);
-    if (gimp && !(cur_.nsize_x[p] > 0 && cur_.nsize_x[p] <= 2 && cur_.nsize_y[p] > 0 && cur_.nsize_y[p] <= 2))
+    const double nsize_x = sized ? r.nsize_x : 2.0 / std::sqrt(count);
+    const double nsize_y = sized ? r.nsize_y : 2.0 / std::sqrt(count);
+    if (gimp && !(nsize_x > 0 && nsize_x <= 2 && nsize_y > 0 && nsize_y <= 2))
       throw common::InputError("particle " + std::to_string(r.id), "nsize must be in (0, 2] for ED2Q16G cells");
-    cur_.lx[p] = cur_.nsize_x[p] / 4.0;
-    cur_.ly[p] = cur_.nsize_y[p] / 4.0;
+    cur_.lx[p] = nsize_x / 4.0;
+    cur_.ly[p] = nsize_y / 4.0;
     cur_.ux[p] = r.displacement_x;
     cur_.uy[p] = r.displacement_y;
     cur_.vx[p] = r.velocity_x;
@@ -982,8 +981,6 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     nxt_.id[k] = cur_.id[p];
     nxt_.material[k] = cur_.material[p];
     nxt_.mass[k] = cur_.mass[p];
-    nxt_.nsize_x[k] = cur_.nsize_x[p];
-    nxt_.nsize_y[k] = cur_.nsize_y[p];
     nxt_.lx[k] = cur_.lx[p];
     nxt_.ly[k] = cur_.ly[p];
     if (!cur_.traction_slot.empty()) nxt_.traction_slot[k] = cur_.traction_slot[p];
@@ -1036,8 +1033,8 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
     r.coord_y = cur_.y[p];
     r.displacement_x = cur_.ux[p];
     r.displacement_y = cur_.uy[p];
-    r.nsize_x = cur_.nsize_x[p];
-    r.nsize_y = cur_.nsize_y[p];
+    r.nsize_x = 4.0 * cur_.lx[p];
+    r.nsize_y = 4.0 * cur_.ly[p];
     r.velocity_x = cur_.vx[p];
     r.velocity_y = cur_.vy[p];
     r.stress_xx = cur_.stress[4 * p];

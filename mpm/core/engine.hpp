@@ -61,8 +61,8 @@ enum class AfterStress {
 struct ParticleArrays {
   std::vector<std::int64_t> id;
   std::vector<std::uint32_t> material;  ///< index into Engine::materials_
-  std::vector<double> mass, volume, nsize_x, nsize_y;
-  std::vector<double> lx, ly;  ///< GIMP half-size in cell units (nsize / 4)
+  std::vector<double> mass, volume;
+  std::vector<double> lx, ly;  ///< GIMP half-size in cell units, CB-Geo's nsize / 4 (exactly: nsize = 4 lx)
   std::vector<double> x, y, ux, uy, vx, vy;
   std::vector<double> stress;         ///< 4 per particle: sxx, syy, szz, sxy (one block: the material reads it whole)
   std::vector<double> exx, eyy, gxy, epsv;
