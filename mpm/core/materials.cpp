@@ -47,7 +47,7 @@ void MohrCoulomb::initial_state(double* svars) const {
   svars[3] = svars[4] = svars[5] = svars[6] = 0.0;
 }
 
-void MohrCoulomb::update(double* stress, const double* dstrain, double* svars) const {
+void MohrCoulomb::update_general(double* stress, const double* dstrain, double* svars) const {
   const double pdstrain = svars[6];
   // Linear softening over pdstrain (CB-Geo mohr_coulomb.tcc, compute_stress, before the predictor).
   if (softening && pdstrain > pdstrain_peak) {

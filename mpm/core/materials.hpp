@@ -61,7 +61,25 @@ struct MohrCoulomb {
   static constexpr std::size_t kStateCount = 7;
   static MohrCoulomb from(const io::MaterialSpec& spec);
   void initial_state(double* svars) const;
-  void update(double* stress, const double* dstrain, double* svars) const;
+  /// The stress update. Inline, the common case: no softening this step, the peak strength, an elastic
+  /// trial (most particles, every step); everything else (softening, the residual or another strength,
+  /// the plastic return) in update_general(), which gives the same result for this case too.
+  void update(double* stress, const double* dstrain, double* svars) const {
+    const bool softens = softening && svars[6] > pdstrain_peak;
+    const constitutive::MohrCoulombStrength& peak = peak_surface.strength;
+    if (!softens && peak_map.valid() && svars[0] == peak.friction && svars[1] == peak.dilation &&
+        svars[2] == peak.cohesion) {
+      const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(
+          Eigen::Map<const Eigen::Vector4d>(stress), Eigen::Map<const Eigen::Vector3d>(dstrain), stiffness);
+      if (peak_map.admits(trial)) {  // the trial stands, the state is unchanged
+        Eigen::Map<Eigen::Vector4d> out(stress);
+        out = trial;
+        return;
+      }
+    }
+    update_general(stress, dstrain, svars);
+  }
+  void update_general(double* stress, const double* dstrain, double* svars) const;
   /// Stress-free separation (an extension; CB-Geo has none): a particle whose density mass / volume has
   /// fallen below separation_density is disconnected grains and carries no stress, the "disconnected"
   /// regime of Dunatunga & Kamrin (2015, J. Fluid Mech. 779, 483-513, section 2.2: sigma = 0 below the
