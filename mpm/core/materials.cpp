@@ -66,21 +66,16 @@ void MohrCoulomb::update_general(double* stress, const double* dstrain, double* 
   const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
   const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, stiffness);
   const constitutive::MohrCoulombStrength strength{svars[0], svars[1], svars[2], tension_cutoff};
-  // The maps were built from peak_surface and residual_surface: their strengths, without a call.
-  const auto is_strength_of = [&](const constitutive::MohrCoulombReturnMap& map,
-                                  const constitutive::MohrCoulombSurface& built_from) {
-    const constitutive::MohrCoulombStrength& c = built_from.strength;
-    return map.valid() && strength.friction == c.friction && strength.dilation == c.dilation &&
-           strength.cohesion == c.cohesion;
-  };
   const auto has_angles_of = [&](const constitutive::MohrCoulombSurface& cached) {
     return strength.friction == cached.strength.friction && strength.dilation == cached.strength.dilation;
   };
-  Eigen::Map<Eigen::Vector4d> out(stress);
+  // The maps were built from peak_surface and residual_surface: their strengths, without a call.
   const constitutive::MohrCoulombReturnMap* map =
-      is_strength_of(peak_map, peak_surface) ? &peak_map
-                                             : (is_strength_of(residual_map, residual_surface) ? &residual_map : nullptr);
+      has_strength_of(peak_map, peak_surface, svars)
+          ? &peak_map
+          : (has_strength_of(residual_map, residual_surface, svars) ? &residual_map : nullptr);
   if (map != nullptr && map->admits(trial)) {  // elastic: the trial stands, the state is unchanged
+    Eigen::Map<Eigen::Vector4d> out(stress);
     out = trial;
     return;
   }
@@ -99,14 +94,18 @@ void MohrCoulomb::update_general(double* stress, const double* dstrain, double* 
     surface.strength = strength;  // the trigonometry depends on the angles only
     r = constitutive::mohr_coulomb_return(trial, {bulk, shear}, surface);
   }
-  out = r.stress;
+  store(r, stress, svars);
+}
+
+void MohrCoulomb::store(const constitutive::MohrCoulombUpdate& r, double* stress, double* svars) {
+  Eigen::Map<Eigen::Vector4d>(stress, 4) = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them
   // when the state is written out, not in the hot loop.
   if (r.region != constitutive::ReturnRegion::Elastic) {
     const Eigen::Vector4d& dp = r.plastic_strain_increment;
     const double mean = (dp[0] + dp[1] + dp[2]) / 3.0;
     const double d0 = dp[0] - mean, d1 = dp[1] - mean, d2 = dp[2] - mean, d3 = 0.5 * dp[3];
-    svars[6] = pdstrain + std::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * d3 * d3));
+    svars[6] += std::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * d3 * d3));
   }
 }
 

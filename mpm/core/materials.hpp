@@ -61,14 +61,11 @@ struct MohrCoulomb {
   static constexpr std::size_t kStateCount = 7;
   static MohrCoulomb from(const io::MaterialSpec& spec);
   void initial_state(double* svars) const;
-  /// The stress update. Inline, the common case: no softening this step, the peak strength, an elastic
-  /// trial (most particles, every step); everything else (softening, the residual or another strength,
-  /// the plastic return) in update_general(), which gives the same result for this case too.
+  /// The stress update. Inline, the common case: no softening this step and the peak strength (the
+  /// elastic trial for most particles, every step, without a call; the peak map's return for the rest);
+  /// softening and any other strength in update_general() (which handles every case).
   void update(double* stress, const double* dstrain, double* svars) const {
-    const bool softens = softening && svars[6] > pdstrain_peak;
-    const constitutive::MohrCoulombStrength& peak = peak_surface.strength;
-    if (!softens && peak_map.valid() && svars[0] == peak.friction && svars[1] == peak.dilation &&
-        svars[2] == peak.cohesion) {
+    if (!(softening && svars[6] > pdstrain_peak) && has_strength_of(peak_map, peak_surface, svars)) {
       const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(
           Eigen::Map<const Eigen::Vector4d>(stress), Eigen::Map<const Eigen::Vector3d>(dstrain), stiffness);
       if (peak_map.admits(trial)) {  // the trial stands, the state is unchanged
@@ -76,10 +73,20 @@ struct MohrCoulomb {
         out = trial;
         return;
       }
+      store(peak_map.apply_plastic(trial), stress, svars);
+      return;
     }
     update_general(stress, dstrain, svars);
   }
   void update_general(double* stress, const double* dstrain, double* svars) const;
+  /// Whether the particle's strength (svars phi, psi, c) is the one `map` was built from.
+  static bool has_strength_of(const constitutive::MohrCoulombReturnMap& map,
+                              const constitutive::MohrCoulombSurface& built_from, const double* svars) {
+    const constitutive::MohrCoulombStrength& c = built_from.strength;
+    return map.valid() && svars[0] == c.friction && svars[1] == c.dilation && svars[2] == c.cohesion;
+  }
+  /// A return's stress, and its plastic strain increment added to pdstrain (svars[6]).
+  static void store(const constitutive::MohrCoulombUpdate& r, double* stress, double* svars);
   /// Stress-free separation (an extension; CB-Geo has none): a particle whose density mass / volume has
   /// fallen below separation_density is disconnected grains and carries no stress, the "disconnected"
   /// regime of Dunatunga & Kamrin (2015, J. Fluid Mech. 779, 483-513, section 2.2: sigma = 0 below the

@@ -20,7 +20,7 @@ class OrderMerge {
   enum class Status { Removed, Kept, Moved };
 
   /// Pass 1 over the iteration indices [0, n) with `threads` threads; status(k) says what particle k did.
-  /// Returns the number of movers (movers()).
+  /// Returns the number of movers.
   template <class StatusOf>
   std::size_t find_movers(std::size_t n, int threads, StatusOf status) {
     threads_ = std::max(1, threads);
@@ -79,8 +79,9 @@ class OrderMerge {
     for (std::size_t t = 0; t < ranges_.size(); ++t) {
       const Range& r = ranges_[t];
       std::size_t o = r.out, m = r.first_mover;
-      auto own_mover = std::lower_bound(r.movers.begin(), r.movers.end(), static_cast<std::uint32_t>(r.first_kept));
-      if (r.kept > 0)
+      if (r.kept > 0) {
+        // This range's own movers, ascending: the indices that are neither kept nor removed.
+        auto own_mover = std::lower_bound(r.movers.begin(), r.movers.end(), static_cast<std::uint32_t>(r.first_kept));
         for (std::size_t k = r.first_kept; k < r.end; ++k) {
           if (own_mover != r.movers.end() && *own_mover == k) {
             ++own_mover;
@@ -91,12 +92,11 @@ class OrderMerge {
           while (m < r.last_mover && before(movers[m], p)) out[o++] = movers[m++];
           out[o++] = p;
         }
+      }
       while (m < r.last_mover) out[o++] = movers[m++];
     }
     return kept_before + movers_.size();
   }
-
-  const std::vector<std::uint32_t>& movers() const { return movers_; }
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
