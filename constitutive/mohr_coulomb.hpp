@@ -89,13 +89,46 @@ struct PlaneStrainStiffness {
       : lambda(el.bulk_modulus - 2.0 * el.shear_modulus / 3.0), two_g(2.0 * el.shear_modulus), g(el.shear_modulus) {}
 };
 
-/// Elastic trial stress: stress + D dstrain with dezz = 0, so dszz = (K - 2G/3)(dexx + deyy).
+/// The square root of a double, or of each lane of a GCC vector of doubles (the batched elastic test of
+/// mpm/core/materials.hpp): correctly rounded either way (IEEE 754), so both give the same bits. On
+/// x86-64 two lanes per SSE2 instruction (the scalar loop pays a library call check per lane for errno).
+inline double sqrt_each(double v) { return std::sqrt(v); }
+template <class V>
+inline V sqrt_each(V v) {
+  constexpr int kLanes = static_cast<int>(sizeof(V) / sizeof(double));
+#if defined(__SSE2__)
+  if constexpr (kLanes % 2 == 0) {
+    using Pair = double __attribute__((vector_size(16)));
+    for (int i = 0; i < kLanes; i += 2) {
+      Pair pair;
+      __builtin_memcpy(&pair, reinterpret_cast<const double*>(&v) + i, sizeof pair);
+      pair = __builtin_ia32_sqrtpd(pair);
+      __builtin_memcpy(reinterpret_cast<double*>(&v) + i, &pair, sizeof pair);
+    }
+    return v;
+  }
+#endif
+  for (int i = 0; i < kLanes; ++i) v[i] = std::sqrt(v[i]);
+  return v;
+}
+
+/// Elastic trial stress: stress + D dstrain with dezz = 0, so dszz = (K - 2G/3)(dexx + deyy). T is double
+/// or a GCC vector of doubles (one state per lane): the same operations, so the same bits per lane.
+template <class T>
+inline void elastic_trial_of(const T stress[4], const T dstrain[3], const PlaneStrainStiffness& d, T trial[4]) {
+  const T dvol = dstrain[0] + dstrain[1];
+  trial[0] = stress[0] + d.lambda * dvol + d.two_g * dstrain[0];
+  trial[1] = stress[1] + d.lambda * dvol + d.two_g * dstrain[1];
+  trial[2] = stress[2] + d.lambda * dvol;
+  trial[3] = stress[3] + d.g * dstrain[2];
+}
 /// (Inline: the MPM calls it once per particle per step.)
 inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
                                        const PlaneStrainStiffness& d) {
-  const double dvol = dstrain[0] + dstrain[1];
-  return {stress[0] + d.lambda * dvol + d.two_g * dstrain[0], stress[1] + d.lambda * dvol + d.two_g * dstrain[1],
-          stress[2] + d.lambda * dvol, stress[3] + d.g * dstrain[2]};
+  const double s[4] = {stress[0], stress[1], stress[2], stress[3]}, de[3] = {dstrain[0], dstrain[1], dstrain[2]};
+  double t[4];
+  elastic_trial_of(s, de, d, t);
+  return {t[0], t[1], t[2], t[3]};
 }
 inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const PlaneStrainStrain& dstrain,
                                        const IsotropicElasticity& el) {
@@ -103,25 +136,32 @@ inline PlaneStrainStress elastic_trial(const PlaneStrainStress& stress, const Pl
 }
 
 /// The largest and smallest principal values s1, s3 of a plane-strain stress (the in-plane Mohr circle
-/// and szz), without the directions: what the elastic test reads.
-struct PrincipalExtremes {
-  double s1, s3;
-  explicit PrincipalExtremes(const PlaneStrainStress& s) {
-    const double center = 0.5 * (s[0] + s[1]);
-    const double half = 0.5 * (s[0] - s[1]);
-    const double radius = std::sqrt(half * half + s[3] * s[3]);
-    const double a = center + radius, b = center - radius, z = s[2];
-    s1 = z >= a ? z : a;
-    s3 = z >= b ? b : z;
-  }
+/// and szz), without the directions: what the elastic test reads. T as in elastic_trial_of.
+template <class T>
+struct Extremes {
+  T s1, s3;
 };
+template <class T>
+inline Extremes<T> principal_extremes(T sxx, T syy, T szz, T sxy) {
+  const T center = 0.5 * (sxx + syy);
+  const T half = 0.5 * (sxx - syy);
+  const T radius = sqrt_each(half * half + sxy * sxy);
+  const T a = center + radius, b = center - radius;
+  return {szz >= a ? szz : a, szz >= b ? b : szz};
+}
+using PrincipalExtremes = Extremes<double>;
+inline PrincipalExtremes principal_extremes(const PlaneStrainStress& s) {
+  return principal_extremes(s[0], s[1], s[2], s[3]);
+}
 
 /// The elastic test without tolerance ([SPO] Box 8.4 (ii)): the main plane f = (s1 - s3) + (s1 + s3) sin phi
 /// - 2 c cos phi <= 0 and, where the cutoff is in force, s1 <= T. True for most states; a state on the
-/// surface within round-off needs the full test (inside(), mohr_coulomb.cpp).
-inline bool strictly_inside(double s1, double s3, double sin_phi, double two_c_cos_phi, bool tension,
-                            double tension_cutoff) {
-  return (s1 - s3) + (s1 + s3) * sin_phi - two_c_cos_phi <= 0.0 && (!tension || s1 - tension_cutoff <= 0.0);
+/// surface within round-off needs the full test (inside(), mohr_coulomb.cpp). T as in elastic_trial_of
+/// (for a vector, a lane mask).
+template <class T>
+inline auto strictly_inside(T s1, T s3, double sin_phi, double two_c_cos_phi, bool tension, double tension_cutoff) {
+  const auto main_plane = (s1 - s3) + (s1 + s3) * sin_phi - two_c_cos_phi <= 0.0;
+  return tension ? main_plane && s1 - tension_cutoff <= 0.0 : main_plane;
 }
 
 /// Elastic predictor + closest-point return in principal stress space ([SPO] Boxes 8.4-8.6; [CDA])
@@ -148,19 +188,26 @@ class MohrCoulombReturnMap {
   MohrCoulombReturnMap(const IsotropicElasticity& elasticity, const MohrCoulombSurface& surface);
   bool valid() const { return data_ != nullptr; }
   MohrCoulombUpdate apply(const PlaneStrainStress& trial_stress) const;
+  /// The first part of admits(), on the principal extremes of a trial (T as in elastic_trial_of: for a
+  /// vector, a lane mask); a trial it refuses may still admit at round-off.
+  template <class T>
+  auto strictly_admits(const Extremes<T>& t) const {
+    return strictly_inside(t.s1, t.s3, sin_phi_, two_c_cos_phi_, tension_, tension_cutoff_);
+  }
   /// True when apply() would find the trial elastic (the same test, without the spectral directions):
   /// the cheap first check of a stress update, where most points are elastic.
   bool admits(const PlaneStrainStress& trial_stress) const {
-    const PrincipalExtremes t(trial_stress);
-    return strictly_inside(t.s1, t.s3, sin_phi_, two_c_cos_phi_, tension_, tension_cutoff_) || admits_at_round_off(t);
+    const PrincipalExtremes t = principal_extremes(trial_stress);
+    return strictly_admits(t) || admits_at_round_off(t);
   }
+  /// The second: a trial strictly_admits() refused lies on the surface within round-off.
+  bool admits_at_round_off(const PrincipalExtremes& t) const;
   /// apply() for a trial that admits() refused (the elastic test is not repeated).
   MohrCoulombUpdate apply_plastic(const PlaneStrainStress& trial_stress) const;
   const MohrCoulombSurface& surface() const;
   const IsotropicElasticity& elasticity() const;
 
  private:
-  bool admits_at_round_off(const PrincipalExtremes& t) const;
   struct Data;
   std::shared_ptr<const Data> data_;
   // What admits() reads, beside the pointer: sin phi, 2 c cos phi, the cutoff and whether it is in force.

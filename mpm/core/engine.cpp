@@ -314,15 +314,11 @@ void Engine::sort_particles() {
 /// After a step, when few particles changed key: the particles that kept theirs are still in (key,
 /// id) order along the previous order, so the new order is their sequence merged with the few others
 /// sorted, in one pass instead of the counting sort. (key, id) is unique, so the order is the one
-/// sort_particles() gives. `previous` maps an iteration index of the step to the particle's storage
-/// index in nxt_ (the previous buffer), where its old key is.
-void Engine::resort_particles(const std::vector<std::uint32_t>& previous) {
-  const std::size_t n_old = previous.size();
-  const auto status = [&](std::size_t k) {
-    if (cur_.key[k] == kRemoved) return OrderMerge::Status::Removed;
-    return cur_.key[k] == nxt_.key[previous[k]] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved;
-  };
-  const std::size_t movers = merge_.find_movers(n_old, threads_, status);
+/// sort_particles() gives. g2p_chunk recorded which particles kept, changed or lost their key, per
+/// chunk (merge_).
+void Engine::resort_particles() {
+  const std::size_t n_old = order_.size();  // the step's particles
+  const std::size_t movers = merge_.collect_movers();  // recorded by g2p_chunk, chunk by chunk
   order_.resize(n_old);
   if (movers > n_old / 16) {  // many: the counting sort is cheaper than sorting them
     for (std::size_t k = 0; k < n_old; ++k) order_[k] = static_cast<std::uint32_t>(k);
@@ -407,6 +403,7 @@ void Engine::step() {
   gy_ = b.y();
   loads_.set_time(time());
   find_wall_contacts();
+  merge_.start(chunks_, threads_);  // g2p_chunk records each chunk's kept particles and movers
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
 #pragma omp parallel num_threads(threads_)
   {
@@ -418,8 +415,7 @@ void Engine::step() {
   throw_first_error();
   std::swap(cur_, nxt_);
   // The next buffer was written in iteration order: storage index k is the particle of iteration k.
-  std::swap(order_, previous_order_);
-  resort_particles(previous_order_);
+  resort_particles();
   ++step_index_;
 }
 
@@ -659,6 +655,7 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
   double* g = remap_momentum ? cleared_band(c) : nullptr;
   const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
   const double h = std::min(grid_.hx, grid_.hy);
+  merge_.open(c, chunk_[c], chunk_[c + 1]);
   // Bilinear APIC reads C_p = sum v grad w^T (the velocity gradient) as well (velocity_transfer.hpp).
   constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
   // Stencil runs: the sums of the run's four particles, formed at its first, and MUSL's remapped
@@ -764,6 +761,7 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
         within(0.0, 0.0) || within(gimp_margin_ * cur_.lx[p] * grid_.hx, gimp_margin_ * cur_.ly[p] * grid_.hy);
     if (on_grid && speed * dt_ <= h) {
       nxt_.key[k] = cell_key(x, y);
+      merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
       continue;
     }
     if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
@@ -773,19 +771,28 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     }
     if (!on_grid) {
       nxt_.key[k] = kRemoved;
+      merge_.record(c, k, OrderMerge::Status::Removed);
       if (locate_) report(c, k, ProblemKind::LeftTheGrid, cur_.id[p], x, y);
     } else {
       nxt_.key[k] = cell_key(x, y);
+      merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
     }
   }
 }
 
 namespace {
-/// Dispatch for a run where every particle has the same material: one instantiation per model.
+/// Dispatch for a run where every particle has the same material: one instantiation per model. update4:
+/// four consecutive particles at once where the model has it (MohrCoulomb::update4).
 template <class Model>
 struct SameMaterial {
   const Model& model;
   void operator()(std::uint32_t /*material*/, double* s, const double* de, double* sv) const { model.update(s, de, sv); }
+  void update4(const std::uint32_t* /*material*/, double* s, const double* de, double* sv) const {
+    if constexpr (requires { model.update4(s, de, sv); })
+      model.update4(s, de, sv);
+    else
+      for (int l = 0; l < 4; ++l) model.update(s + 4 * l, de + 3 * l, sv + kStateVariables * l);
+  }
   bool separated(std::uint32_t /*material*/, double mass, double volume) const { return model.separated(mass, volume); }
 };
 /// Dispatch for mixed materials: a switch on the material type (no virtual call).
@@ -797,6 +804,9 @@ struct MixedMaterials {
       m.mohr_coulomb.update(s, de, sv);
     else
       m.elastic.update(s, de, sv);
+  }
+  void update4(const std::uint32_t* material, double* s, const double* de, double* sv) const {
+    for (int l = 0; l < 4; ++l) (*this)(material[l], s + 4 * l, de + 3 * l, sv + kStateVariables * l);
   }
   bool separated(std::uint32_t material, double mass, double volume) const {
     const Material& m = materials[material];
@@ -963,14 +973,17 @@ void Engine::update_material_state(std::size_t c) {
 /// the strain sums, and the particle fields carried unchanged, all into the next buffer.
 template <class Dispatch>
 void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch) {
-  for (std::size_t k = k0; k < k1; ++k) {
+  // The stress and state variables are updated in place in the next buffer (whole-block copies first:
+  // no partial-store stalls), four particles at a time (their blocks follow one another there).
+  const auto copy_in = [&](std::size_t k) {
+    const std::uint32_t p = order_[k];
+    copy_doubles<4>(&cur_.stress[4 * p], &nxt_.stress[4 * k]);
+    copy_doubles<kStateVariables>(&cur_.svars[p * kStateVariables], &nxt_.svars[k * kStateVariables]);
+  };
+  const auto carry = [&](std::size_t k) {
     const std::uint32_t p = order_[k];
     const double* de = &dstrain_[3 * k];
-    double* s = &nxt_.stress[4 * k];  // updated in place (a whole-block copy: no partial-store stalls)
-    copy_doubles<4>(&cur_.stress[4 * p], s);
-    double* sv = &nxt_.svars[k * kStateVariables];  // updated in place, as the stress
-    copy_doubles<kStateVariables>(&cur_.svars[p * kStateVariables], sv);
-    dispatch(cur_.material[p], s, de, sv);
+    double* s = &nxt_.stress[4 * k];
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
     if (dispatch.separated(cur_.material[p], cur_.mass[p], nxt_.volume[k])) std::fill_n(s, 4, 0.0);
@@ -985,6 +998,21 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     nxt_.ly[k] = cur_.ly[p];
     if (!cur_.traction_slot.empty()) nxt_.traction_slot[k] = cur_.traction_slot[p];
     if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(c, k, ProblemKind::StressNotFinite, cur_.id[p], s[0], s[1]);
+  };
+  std::size_t k = k0;
+  for (; k + 4 <= k1; k += 4) {
+    std::uint32_t material[4];
+    for (std::size_t l = 0; l < 4; ++l) {
+      copy_in(k + l);
+      material[l] = cur_.material[order_[k + l]];
+    }
+    dispatch.update4(material, &nxt_.stress[4 * k], &dstrain_[3 * k], &nxt_.svars[k * kStateVariables]);
+    for (std::size_t l = 0; l < 4; ++l) carry(k + l);
+  }
+  for (; k < k1; ++k) {
+    copy_in(k);
+    dispatch(cur_.material[order_[k]], &nxt_.stress[4 * k], &dstrain_[3 * k], &nxt_.svars[k * kStateVariables]);
+    carry(k);
   }
 }
 

@@ -143,7 +143,7 @@ class Engine {
 
   // --- serial parts ---
   void sort_particles();  ///< order_ from cur_.key: by key, then id; drops removed particles; chunks
-  void resort_particles(const std::vector<std::uint32_t>& previous);  ///< the same after a step, by a merge
+  void resort_particles();  ///< the same after a step, by a merge
   void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
   void set_up_wall_contacts();  ///< contact_nodes_ from the constraints (wall_contact.cpp)
@@ -240,7 +240,6 @@ class Engine {
   static constexpr std::size_t kChunkParticles = 2048;  ///< target chunk size
   std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
   std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
-  std::vector<std::uint32_t> previous_order_;  ///< the step's order_, kept for resort_particles
   OrderMerge merge_;                      ///< resort_particles: the particles that changed key, merged in
 
   // materials and analysis

@@ -2,11 +2,12 @@
 // The particle order after a step, shared by the threads (Engine::resort_particles). The live particles
 // that kept their sort key are still in order along the previous iteration order; the few that changed
 // it (the movers) are sorted on their own and merged in. Both passes split the iteration indices into
-// one contiguous range per thread:
-//   1. each thread lists the movers of its range and counts its kept particles;
-//   2. after the movers are sorted, thread t merges its kept particles with the movers that fall between
-//      its first kept particle and the next range's (a binary search), writing from
-//      (kept particles of the ranges before t) + (movers before its first kept particle).
+// contiguous ranges (one per thread, or the engine's chunks):
+//   1. each range lists its movers and counts its kept particles (find_movers, or the caller while it
+//      writes the new keys: start / open / record);
+//   2. after the movers are sorted, each range merges its kept particles with the movers that fall
+//      between its first kept particle and the next range's (a binary search), writing from
+//      (kept particles of the ranges before it) + (movers before its first kept particle).
 // The result is the serial merge's, element for element, for any thread count (and without OpenMP).
 #include <algorithm>
 #include <cstddef>
@@ -23,26 +24,41 @@ class OrderMerge {
   /// Returns the number of movers.
   template <class StatusOf>
   std::size_t find_movers(std::size_t n, int threads, StatusOf status) {
-    threads_ = std::max(1, threads);
-    ranges_.resize(static_cast<std::size_t>(threads_));
-    const auto ranges = static_cast<std::size_t>(threads_);
+    const auto ranges = static_cast<std::size_t>(std::max(1, threads));
+    start(ranges, threads);
 #pragma omp parallel for num_threads(threads_) schedule(static, 1)
     for (std::size_t t = 0; t < ranges; ++t) {
-      Range& r = ranges_[t];
-      r.begin = n * t / ranges;
-      r.end = n * (t + 1) / ranges;
-      r.movers.clear();
-      r.kept = 0;
-      r.first_kept = kNone;
-      for (std::size_t k = r.begin; k < r.end; ++k) {
-        const Status s = status(k);
-        if (s == Status::Kept) {
-          if (r.kept++ == 0) r.first_kept = k;
-        } else if (s == Status::Moved) {
-          r.movers.push_back(static_cast<std::uint32_t>(k));
-        }
-      }
+      open(t, n * t / ranges, n * (t + 1) / ranges);
+      for (std::size_t k = n * t / ranges; k < n * (t + 1) / ranges; ++k) record(t, k, status(k));
     }
+    return collect_movers();
+  }
+
+  /// Pass 1 done by the caller while it visits the particles (Engine::g2p_chunk, as it writes the new
+  /// keys): the iteration indices cut into `ranges` consecutive ranges (pass 2 then runs over them with
+  /// `threads` threads); each range is opened, then told the status of each of its indices in order, by
+  /// one thread at a time; collect_movers() returns the number of movers.
+  void start(std::size_t ranges, int threads) {
+    threads_ = std::max(1, threads);
+    ranges_.resize(ranges);
+  }
+  void open(std::size_t r, std::size_t begin, std::size_t end) {
+    Range& range = ranges_[r];
+    range.begin = begin;
+    range.end = end;
+    range.movers.clear();
+    range.kept = 0;
+    range.first_kept = kNone;
+  }
+  void record(std::size_t r, std::size_t k, Status s) {
+    Range& range = ranges_[r];
+    if (s == Status::Kept) {
+      if (range.kept++ == 0) range.first_kept = k;
+    } else if (s == Status::Moved) {
+      range.movers.push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+  std::size_t collect_movers() {
     movers_.clear();
     for (const Range& r : ranges_) movers_.insert(movers_.end(), r.movers.begin(), r.movers.end());
     return movers_.size();
@@ -100,7 +116,7 @@ class OrderMerge {
 
  private:
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-  struct Range {
+  struct alignas(64) Range {  // one cache line per range: the threads of pass 1 count in their own
     std::size_t begin = 0, end = 0;
     std::vector<std::uint32_t> movers;  ///< this range's movers, ascending
     std::size_t kept = 0, first_kept = kNone;

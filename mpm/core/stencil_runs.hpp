@@ -18,19 +18,6 @@
 
 namespace mpm::core {
 
-/// Four doubles: one value of each of four particles. One AVX register in the AVX2 variants of the
-/// kernels (common/cpu_variants.hpp), two SSE2 registers elsewhere; lane by lane the scalar operations,
-/// as Double2 (lanes.hpp).
-using Double4 = double __attribute__((vector_size(32)));
-inline Double4 splat4(double v) { return Double4{v, v, v, v}; }
-/// Unaligned load / store of four consecutive doubles.
-inline Double4 load4(const double* p) {
-  Double4 v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
-}
-inline void store4(double* p, Double4 v) { __builtin_memcpy(p, &v, sizeof v); }
-
 // Shape functions of a run, one axis at a time.
 
 /// eval_xy for the four particles of a stencil run (one stencil, first node base on this axis): one

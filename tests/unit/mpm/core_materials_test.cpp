@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
 
 #include "mpm/core/materials.hpp"
 #include "support/tolerance.hpp"
@@ -114,6 +118,69 @@ TEST(MohrCoulombMaterial, InvariantsInCbGeoConvention) {
   const double j2 = ((2e4 * 2e4) + (1e4 * 1e4) + (1e4 * 1e4)) / 6.0;
   EXPECT_CLOSE(sv[4], std::sqrt(2 * j2), 1e-8, 1e-12);  // rho = sqrt(2 J2)
   EXPECT_CLOSE(sv[5], std::acos(0.0) / 3.0, 1e-12, 0);  // pure shear deviator: J3 = 0 -> theta = pi/6
+}
+
+/// The bits of a double (NaN payloads and signed zeros compared too).
+std::uint64_t bits(double v) {
+  std::uint64_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// update4 (the elastic test of four particles in the lanes of a Double4) against four update() calls:
+// the same stress and state variables, bit for bit, on random groups that mix elastic trials, plastic
+// returns, states on the surface within round-off, softened particles (which take update_general) and
+// a non-finite increment.
+TEST(MohrCoulombMaterial, UpdateOfFourParticlesIsFourUpdatesBitForBit) {
+  const MohrCoulomb m = MohrCoulomb::from(mc_spec());
+  constexpr std::size_t kSv = mpm::core::kStateVariables;
+  std::mt19937_64 rng(20261204);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int elastic = 0, plastic = 0, softened = 0, on_surface = 0;
+  for (int group = 0; group < 4000; ++group) {
+    double s[16], de[12], sv[4 * kSv];
+    for (int l = 0; l < 4; ++l) {
+      double* sl = s + 4 * l;
+      const double p = -2e4 * (1.0 + unit(rng)), q = 1e4 * unit(rng);
+      sl[0] = p + q;
+      sl[1] = p - q;
+      sl[2] = p + 0.3 * q * unit(rng);
+      sl[3] = 5e3 * unit(rng);
+      const double scale = std::pow(10.0, -7.0 + 4.0 * (0.5 + 0.5 * unit(rng)));
+      for (int c = 0; c < 3; ++c) de[3 * l + c] = scale * unit(rng);
+      m.initial_state(sv + kSv * l);
+      if (group % 7 == l) {  // softened: update_general
+        sv[kSv * l + 6] = 0.02;
+        ++softened;
+      }
+      if (group % 11 == l) {  // a returned state, loaded by nothing: on the surface within round-off
+        double returned[4] = {-1e4, -1e4, -1e4, 0.0}, sv0[kSv];
+        m.initial_state(sv0);
+        const double shear[3] = {2e-3, -2e-3, 1e-3};
+        m.update(returned, shear, sv0);
+        std::memcpy(sl, returned, sizeof returned);
+        for (int c = 0; c < 3; ++c) de[3 * l + c] = 0.0;
+        ++on_surface;
+      }
+    }
+    if (group == 3999) de[5] = std::numeric_limits<double>::quiet_NaN();
+    double s4[16], sv4[4 * kSv];
+    std::memcpy(s4, s, sizeof s);
+    std::memcpy(sv4, sv, sizeof sv);
+    m.update4(s4, de, sv4);
+    for (int l = 0; l < 4; ++l) {
+      const double pd_before = sv[kSv * l + 6];
+      m.update(s + 4 * l, de + 3 * l, sv + kSv * l);
+      (sv[kSv * l + 6] == pd_before ? elastic : plastic) += 1;
+    }
+    for (int i = 0; i < 16; ++i) ASSERT_EQ(bits(s4[i]), bits(s[i])) << "group " << group << " stress " << i;
+    for (std::size_t i = 0; i < 4 * kSv; ++i) ASSERT_EQ(bits(sv4[i]), bits(sv[i])) << "group " << group << " svar " << i;
+  }
+  // Every path was taken (counted from the one-particle updates).
+  EXPECT_GT(elastic, 1000);
+  EXPECT_GT(plastic, 1000);
+  EXPECT_GT(softened, 500);
+  EXPECT_GT(on_surface, 300);
 }
 
 }  // namespace
