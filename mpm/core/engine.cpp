@@ -759,9 +759,12 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
     };
     const bool on_grid =
         within(0.0, 0.0) || within(gimp_margin_ * cur_.lx[p] * grid_.hx, gimp_margin_ * cur_.ly[p] * grid_.hy);
-    if (on_grid && speed * dt_ <= h) {
+    const auto place_on_grid = [&] {
       nxt_.key[k] = cell_key(x, y);
       merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
+    };
+    if (on_grid && speed * dt_ <= h) {
+      place_on_grid();
       continue;
     }
     if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
@@ -774,8 +777,7 @@ void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
       merge_.record(c, k, OrderMerge::Status::Removed);
       if (locate_) report(c, k, ProblemKind::LeftTheGrid, cur_.id[p], x, y);
     } else {
-      nxt_.key[k] = cell_key(x, y);
-      merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
+      place_on_grid();
     }
   }
 }
@@ -975,13 +977,14 @@ template <class Dispatch>
 void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c, const Dispatch& dispatch) {
   // The stress and state variables are updated in place in the next buffer (whole-block copies first:
   // no partial-store stalls), four particles at a time (their blocks follow one another there).
+  // copy_in(k) returns p = order_[k], the particle's index in the current buffer, for carry(k, p).
   const auto copy_in = [&](std::size_t k) {
     const std::uint32_t p = order_[k];
     copy_doubles<4>(&cur_.stress[4 * p], &nxt_.stress[4 * k]);
     copy_doubles<kStateVariables>(&cur_.svars[p * kStateVariables], &nxt_.svars[k * kStateVariables]);
+    return p;
   };
-  const auto carry = [&](std::size_t k) {
-    const std::uint32_t p = order_[k];
+  const auto carry = [&](std::size_t k, std::uint32_t p) {
     const double* de = &dstrain_[3 * k];
     double* s = &nxt_.stress[4 * k];
     const double dv = de[0] + de[1];
@@ -1001,18 +1004,18 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
   };
   std::size_t k = k0;
   for (; k + 4 <= k1; k += 4) {
-    std::uint32_t material[4];
+    std::uint32_t p[4], material[4];
     for (std::size_t l = 0; l < 4; ++l) {
-      copy_in(k + l);
-      material[l] = cur_.material[order_[k + l]];
+      p[l] = copy_in(k + l);
+      material[l] = cur_.material[p[l]];
     }
     dispatch.update4(material, &nxt_.stress[4 * k], &dstrain_[3 * k], &nxt_.svars[k * kStateVariables]);
-    for (std::size_t l = 0; l < 4; ++l) carry(k + l);
+    for (std::size_t l = 0; l < 4; ++l) carry(k + l, p[l]);
   }
   for (; k < k1; ++k) {
-    copy_in(k);
-    dispatch(cur_.material[order_[k]], &nxt_.stress[4 * k], &dstrain_[3 * k], &nxt_.svars[k * kStateVariables]);
-    carry(k);
+    const std::uint32_t p = copy_in(k);
+    dispatch(cur_.material[p], &nxt_.stress[4 * k], &dstrain_[3 * k], &nxt_.svars[k * kStateVariables]);
+    carry(k, p);
   }
 }
 

@@ -28,8 +28,9 @@ class OrderMerge {
     start(ranges, threads);
 #pragma omp parallel for num_threads(threads_) schedule(static, 1)
     for (std::size_t t = 0; t < ranges; ++t) {
-      open(t, n * t / ranges, n * (t + 1) / ranges);
-      for (std::size_t k = n * t / ranges; k < n * (t + 1) / ranges; ++k) record(t, k, status(k));
+      const std::size_t begin = n * t / ranges, end = n * (t + 1) / ranges;
+      open(t, begin, end);
+      for (std::size_t k = begin; k < end; ++k) record(t, k, status(k));
     }
     return collect_movers();
   }
