@@ -12,6 +12,7 @@
 #include "common/cpu_variants.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
+#include "constitutive/mohr_coulomb.hpp"
 #include "mpm/core/boundary_rules.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/shape_functions.hpp"
@@ -58,6 +59,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
   gimp_margin_ = gimp ? 1.0 : 0.0;
+  keys_fit_int32_ = 4.0 * cells_x_ * cells_y_ < 2147483647.0;
   if (gimp) {
     // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
     const double tol = 1e-9;
@@ -637,151 +639,6 @@ void Engine::report(std::size_t c, std::size_t k, ProblemKind kind, std::int64_t
   if (k < pr.k) pr = Problem{k, kind, id, a, b};
 }
 
-/// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
-/// FLIP v += dt sum N a, PIC v = sum N v_new, blended (VelocityTransfer::particle_velocity); APIC
-/// (Affine) v = sum N v_new and the new B_p (Jiang et al. 2015; affine_matrix_at); x += dt sum N v_new.
-/// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
-/// the mesh region (an error, or removed when locate_particles is false). With `strain_increments`
-/// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
-/// With `remap_momentum` (MUSL) it also maps the updated particle momentum m N v back to the nodes
-/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass (APIC: the particle's
-/// affine field, MomentumContribution at its old position, where B_p was just formed, with the affine
-/// weights p2g formed there).
-template <class Shape, bool Affine>
-void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
-  constexpr int W = Shape::kWidth;
-  const bool strain_increments = also == G2pAlso::StrainIncrements;
-  const bool remap_momentum = also == G2pAlso::RemapMomentum;
-  double* g = remap_momentum ? cleared_band(c) : nullptr;
-  const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
-  const double h = std::min(grid_.hx, grid_.hy);
-  merge_.open(c, chunk_[c], chunk_[c + 1]);
-  // Bilinear APIC reads C_p = sum v grad w^T (the velocity gradient) as well (velocity_transfer.hpp).
-  constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
-  // Stencil runs: the sums of the run's four particles, formed at its first, and MUSL's remapped
-  // momentum m v (APIC: and m B) of each, mapped at its last.
-  GridSums run_sums[kRunLanes];
-  Double4 run_mvx = splat4(0.0), run_mvy = splat4(0.0);
-  Double4 run_mB[4] = {splat4(0.0), splat4(0.0), splat4(0.0), splat4(0.0)};
-  std::size_t run_first = chunk_[c + 1];
-  for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-    const std::uint32_t p = order_[k];
-    if (run_lane_[k] == 0) {
-      const StencilWeights4<W> w4(&weights_[4 * W * k]);
-      const auto first = static_cast<std::size_t>(base_[k]);
-      if constexpr (Affine) {
-        Double4 dxs4[W], dys4[W], ox = splat4(0.0), oy = ox;
-        for (int l = 0; l < kRunLanes; ++l) {
-          ox[l] = stencil_offset_[2 * (k + l)];
-          oy[l] = stencil_offset_[2 * (k + l) + 1];
-        }
-        for (int a = 0; a < W; ++a) {
-          dxs4[a] = ox + a * grid_.hx;
-          dys4[a] = oy + a * grid_.hy;
-        }
-        gather_updated_affine4(updated_.data(), first, static_cast<std::size_t>(nx_), w4, dxs4, dys4,
-                               strain_increments || kBilinearAffine, run_sums);
-      } else {
-        gather_updated4(updated_.data(), first, static_cast<std::size_t>(nx_), w4, strain_increments, run_sums);
-      }
-      run_first = k;
-    }
-    const bool in_run = k - run_first < static_cast<std::size_t>(kRunLanes);
-    // Outside a run a particle's weights are a block of its own (Engine::weights_).
-    const StencilWeights<W> w = in_run ? StencilWeights<W>() : StencilWeights<W>(&weights_[4 * W * k]);
-    const double* offset = Affine ? &stencil_offset_[2 * k] : nullptr;
-    double dxs[W] = {}, dys[W] = {};  // APIC: node minus particle, per axis
-    if (Affine && !in_run)
-      for (int a = 0; a < W; ++a) {
-        dxs[a] = offset[0] + a * grid_.hx;
-        dys[a] = offset[1] + a * grid_.hy;
-      }
-    const GridSums sums = in_run ? run_sums[k - run_first]
-                                 : gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]),
-                                                             static_cast<std::size_t>(nx_), w, dxs, dys,
-                                                             strain_increments || kBilinearAffine);
-    if (strain_increments) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
-    const double vgx = sums.v[0], vgy = sums.v[1];
-    const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
-    const double vy = Affine ? vgy : transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
-    const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
-    nxt_.vx[k] = vx;
-    nxt_.vy[k] = vy;
-    // APIC: B = sum N v (x_i - x_p)^T and C = sum v grad w^T, both xx xy yx yy; the new matrix is stored
-    // as read at x^(n+1), and MUSL's remap reads it at x^n (affine_matrix_at).
-    const double B[4] = {sums.b_dx[0], sums.b_dy[0], sums.b_dx[1], sums.b_dy[1]};
-    const double C[4] = {sums.L.d_dx[0], sums.L.d_dy[0], sums.L.d_dx[1], sums.L.d_dy[1]};
-    if constexpr (Affine)
-      affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
-                       grid_.hx, grid_.hy, &nxt_.affine[4 * k]);
-    double B_old[4] = {0, 0, 0, 0};
-    if constexpr (Affine) {
-      if (remap_momentum)
-        affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_,
-                         cells_x_ - 1, cells_y_ - 1, grid_.hx, grid_.hy, B_old);
-    }
-    if (remap_momentum && in_run) {
-      const std::size_t l = k - run_first;
-      const double m = cur_.mass[p];
-      run_mvx[l] = m * vx;
-      run_mvy[l] = m * vy;
-      if constexpr (Affine)
-        for (int e = 0; e < 4; ++e) run_mB[e][l] = m * B_old[e];
-      if (l == kRunLanes - 1) {
-        const StencilWeights4<W> w4(&weights_[4 * W * run_first]);
-        double* band_row = g + local_[run_first];
-        if constexpr (Affine)
-          scatter_affine_momentum4(
-              band_row, row_stride, w4,
-              AffineMomentum4<W>(run_mvx, run_mvy, run_mB, &affine_weights_[2 * W * run_first], w4), nullptr);
-        else
-          scatter_momentum4(band_row, row_stride, w4, run_mvx, run_mvy);
-      }
-    } else if (remap_momentum) {
-      const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, Double2{B_old[0], B_old[2]},
-                                                         Double2{B_old[1], B_old[3]},
-                                                         Affine ? &affine_weights_[2 * W * k] : nullptr, w);
-      scatter_momentum(g + local_[k], row_stride, w, momentum);
-    }
-    nxt_.x[k] = x;
-    nxt_.y[k] = y;
-    nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;
-    nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
-    const double speed = std::sqrt(vx * vx + vy * vy);
-    // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
-    // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
-    // support reaches the constrained nodes and one moving node: N = l/4 at the boundary, so it can
-    // drift past it by a fraction of lp). Linear particles must stay inside the region. The test is
-    // false for a NaN coordinate, so with a speed within one cell per step it implies finite values;
-    // inside the region itself (most particles) the margin (>= 0) is not needed.
-    const auto within = [&](double mx, double my) {
-      return x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
-    };
-    const bool on_grid =
-        within(0.0, 0.0) || within(gimp_margin_ * cur_.lx[p] * grid_.hx, gimp_margin_ * cur_.ly[p] * grid_.hy);
-    const auto place_on_grid = [&] {
-      nxt_.key[k] = cell_key(x, y);
-      merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
-    };
-    if (on_grid && speed * dt_ <= h) {
-      place_on_grid();
-      continue;
-    }
-    if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
-      report(c, k, ProblemKind::VelocityNotFinite, cur_.id[p], vx, vy);
-    } else if (!(speed * dt_ <= h)) {  // an overflowing speed too
-      report(c, k, ProblemKind::RunawayVelocity, cur_.id[p], speed, h / dt_);
-    }
-    if (!on_grid) {
-      nxt_.key[k] = kRemoved;
-      merge_.record(c, k, OrderMerge::Status::Removed);
-      if (locate_) report(c, k, ProblemKind::LeftTheGrid, cur_.id[p], x, y);
-    } else {
-      place_on_grid();
-    }
-  }
-}
-
 namespace {
 /// Dispatch for a run where every particle has the same material: one instantiation per model. update4:
 /// four consecutive particles at once where the model has it (MohrCoulomb::update4).
@@ -1092,5 +949,6 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
 
 }  // namespace mpm::core
 
-// p2g per particle and per stencil run (in this translation unit for the CPU variants to inline).
+// p2g and g2p per particle and per stencil run (in this translation unit for the CPU variants to inline).
+#include "mpm/core/engine_g2p.inl"
 #include "mpm/core/engine_p2g.inl"

@@ -128,6 +128,16 @@ class Engine {
   void integrate_row(int j);
   template <class Shape, bool Affine>
   void g2p_chunk(std::size_t c, G2pAlso also);  ///< Affine: APIC (v_p, B_p from the grid)
+  template <class Shape, bool Affine>
+  void g2p_particle(std::size_t c, std::size_t k, G2pAlso also, double* band);
+  template <class Shape, bool Affine>
+  void g2p_run(std::size_t c, std::size_t k, G2pAlso also, double* band);
+  template <class Shape>
+  void new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& sums, double vgx, double vgy,
+                         double* at_old);
+  void place_particle(std::size_t c, std::size_t k, std::uint32_t p, double vgx, double vgy, double vx, double vy);
+  void place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Double4 vgx, Double4 vgy, Double4 vx,
+                 Double4 vy);
   template <class Shape>
   void compute_strain_increments(std::size_t c);
   void apply_cell_remedy(std::size_t c);  ///< a cell remedy on each cell of chunk c
@@ -155,6 +165,7 @@ class Engine {
   /// (uGIMP: the 3 x 3 nodes around the nearest node; bilinear: the cell's 2 x 2).
   /// cell_of(key) is the cell.
   std::int64_t cell_key(double x, double y) const;
+  Long4 cell_keys(Double4 x, Double4 y) const;  ///< cell_key in lanes, for positions inside the region
   static std::int64_t cell_of(std::int64_t key) { return key >> 2; }
 
   // grid
@@ -163,6 +174,7 @@ class Engine {
   int cells_x_ = 0, cells_y_ = 0;
   double inv_hx_ = 1, inv_hy_ = 1;
   double gimp_margin_ = 0;  ///< 1 for uGIMP (a particle may leave the region by its half-size lp), 0 for linear
+  bool keys_fit_int32_ = false;  ///< every cell_key fits 32 bits (cell_keys computes in them)
   std::size_t nodes_ = 0;
   int bi0_ = 0, bi1_ = 0, bj0_ = 0, bj1_ = 0;  ///< active node box [bi0, bi1) x [bj0, bj1)
   std::vector<double> mass_;      ///< nodal mass

@@ -30,6 +30,9 @@ inline Double4 load4(const double* p) {
   return v;
 }
 inline void store4(double* p, Double4 v) { __builtin_memcpy(p, &v, sizeof v); }
+/// Four integers, one per particle: 32-bit (a truncated Double4, __builtin_convertvector) and 64-bit.
+using Int4 = std::int32_t __attribute__((vector_size(16)));
+using Long4 = std::int64_t __attribute__((vector_size(32)));
 
 /// Four blocks of four values (block l at p + 4 l) as four Double4 of one value each (v[c] lane l =
 /// p[4 l + c]), and back: a 4 x 4 transpose.

@@ -174,13 +174,31 @@ inline VelocityGradient4 gather_velocity_gradient4(const double* field, std::siz
   return L;
 }
 
-/// gather_updated<W, false> (FLIP / PIC: v, a and with `gradient` the velocity gradient of v) for the
-/// four particles of a run, lane l into sums[l].
-template <int W>
-inline void gather_updated4(const double* updated, std::size_t first, std::size_t row_nodes,
-                            const StencilWeights4<W>& w, bool gradient, GridSums sums[4]) {
+/// GridSums of the four particles of a run, particle l in lane l of each value.
+struct GridSums4 {
   Double4 vx = splat4(0.0), vy = splat4(0.0), ax = splat4(0.0), ay = splat4(0.0);
+  Double4 bdx_x = splat4(0.0), bdx_y = splat4(0.0), bdy_x = splat4(0.0), bdy_y = splat4(0.0);
   VelocityGradient4 L;
+  /// Lane l as GridSums.
+  GridSums lane(int l) const {
+    GridSums s;
+    s.v = Double2{vx[l], vy[l]};
+    s.a = Double2{ax[l], ay[l]};
+    s.b_dx = Double2{bdx_x[l], bdx_y[l]};
+    s.b_dy = Double2{bdy_x[l], bdy_y[l]};
+    s.L = L.lane(l);
+    return s;
+  }
+};
+
+/// gather_updated<W, false> (FLIP / PIC: v, a and with `gradient` the velocity gradient of v) for the
+/// four particles of a run.
+template <int W>
+inline GridSums4 gather_updated4(const double* updated, std::size_t first, std::size_t row_nodes,
+                                 const StencilWeights4<W>& w, bool gradient) {
+  GridSums4 s;
+  Double4 &vx = s.vx, &vy = s.vy, &ax = s.ax, &ay = s.ay;
+  VelocityGradient4& L = s.L;
   for (int b = 0; b < W; ++b, first += row_nodes) {
     const double* u = updated + 4 * first;
     Double4 wx_vx = splat4(0.0), wx_vy = splat4(0.0), wx_ax = splat4(0.0), wx_ay = splat4(0.0);
@@ -202,23 +220,20 @@ inline void gather_updated4(const double* updated, std::size_t first, std::size_
     ay += w.wy[b] * wx_ay;
     if (gradient) L.add_row(wx_vx, wx_vy, dwx_vx, dwx_vy, w.wy[b], w.dwy[b]);
   }
-  for (int l = 0; l < 4; ++l) {
-    sums[l].v = Double2{vx[l], vy[l]};
-    sums[l].a = Double2{ax[l], ay[l]};
-    if (gradient) sums[l].L = L.lane(l);
-  }
+  return s;
 }
 
 /// gather_updated<W, true> (APIC: v, B and with `gradient` the velocity gradient of v) for the four
-/// particles of a run, lane l into sums[l]; dxs, dys: node minus particle per stencil column / row.
+/// particles of a run; dxs, dys: node minus particle per stencil column / row.
 template <int W>
-inline void gather_updated_affine4(const double* updated, std::size_t first, std::size_t row_nodes,
-                                   const StencilWeights4<W>& w, const Double4* dxs, const Double4* dys, bool gradient,
-                                   GridSums sums[4]) {
-  Double4 vx = splat4(0.0), vy = splat4(0.0), bdy_x = splat4(0.0), bdy_y = splat4(0.0);
+inline GridSums4 gather_updated_affine4(const double* updated, std::size_t first, std::size_t row_nodes,
+                                        const StencilWeights4<W>& w, const Double4* dxs, const Double4* dys,
+                                        bool gradient) {
+  GridSums4 s;
+  Double4 &vx = s.vx, &vy = s.vy, &bdy_x = s.bdy_x, &bdy_y = s.bdy_y;
   Double4 column_x[W], column_y[W];
   for (int a = 0; a < W; ++a) column_x[a] = column_y[a] = splat4(0.0);
-  VelocityGradient4 L;
+  VelocityGradient4& L = s.L;
   for (int b = 0; b < W; ++b, first += row_nodes) {
     const double* u = updated + 4 * first;
     Double4 row_x = splat4(0.0), row_y = splat4(0.0);
@@ -244,17 +259,11 @@ inline void gather_updated_affine4(const double* updated, std::size_t first, std
     bdy_y += row_y * dys[b];
     if (gradient) L.add_row(wx_vx, wx_vy, dwx_vx, dwx_vy, w.wy[b], w.dwy[b]);
   }
-  Double4 bdx_x = splat4(0.0), bdx_y = splat4(0.0);
   for (int a = 0; a < W; ++a) {
-    bdx_x += column_x[a] * dxs[a];
-    bdx_y += column_y[a] * dxs[a];
+    s.bdx_x += column_x[a] * dxs[a];
+    s.bdx_y += column_y[a] * dxs[a];
   }
-  for (int l = 0; l < 4; ++l) {
-    sums[l].v = Double2{vx[l], vy[l]};
-    sums[l].b_dx = Double2{bdx_x[l], bdx_y[l]};
-    sums[l].b_dy = Double2{bdy_x[l], bdy_y[l]};
-    if (gradient) sums[l].L = L.lane(l);
-  }
+  return s;
 }
 
 /// affine_weights for the four particles of a stencil run, one axis (the particle l in lane l): w the

@@ -50,10 +50,12 @@ struct VelocityTransfer {
   bool affine() const { return kind == io::Transfer::APIC; }
 
   /// The velocity component g2p hands back, from the particle's old velocity, the interpolated updated
-  /// grid velocity sum w v_i^new and the interpolated grid acceleration sum w a_i.
-  double particle_velocity(double v_old, double v_grid, double a_grid, double dt) const {
+  /// grid velocity sum w v_i^new and the interpolated grid acceleration sum w a_i; T = double, or
+  /// Double4 for the four particles of a stencil run (the same operations per lane).
+  template <class T>
+  T particle_velocity(T v_old, T v_grid, T a_grid, double dt) const {
     if (kind == io::Transfer::APIC) return v_grid;
-    const double flip = v_old + dt * a_grid;
+    const T flip = v_old + dt * a_grid;
     return pic > 0.0 ? (1.0 - pic) * flip + pic * v_grid : flip;
   }
 };

@@ -87,8 +87,7 @@ void check_run_kernels(unsigned seed) {
 
     // g2p: the velocity gradient (stride 2) and the FLIP sums with the gradient (stride 4).
     const VelocityGradient4 L4 = gather_velocity_gradient4(field.data(), 2, first, kRowNodes, w4);
-    GridSums sums4[kLanes];
-    gather_updated4(field.data(), first, kRowNodes, w4, true, sums4);
+    const GridSums4 run = gather_updated4(field.data(), first, kRowNodes, w4, true);
     for (int p = 0; p < kLanes; ++p) {
       const StencilWeights<W> w(blocks + 4 * W * p);
       const VelocityGradient L = gather_velocity_gradient(field.data(), 2, first, kRowNodes, w);
@@ -97,11 +96,12 @@ void check_run_kernels(unsigned seed) {
         EXPECT_EQ(L4.lane(p).d_dy[i], L.d_dy[i]);
       }
       const GridSums s = gather_updated<W, false>(field.data(), first, kRowNodes, w, nullptr, nullptr, true);
+      const GridSums lane = run.lane(p);
       for (int i = 0; i < 2; ++i) {
-        EXPECT_EQ(sums4[p].v[i], s.v[i]);
-        EXPECT_EQ(sums4[p].a[i], s.a[i]);
-        EXPECT_EQ(sums4[p].L.d_dx[i], s.L.d_dx[i]);
-        EXPECT_EQ(sums4[p].L.d_dy[i], s.L.d_dy[i]);
+        EXPECT_EQ(lane.v[i], s.v[i]);
+        EXPECT_EQ(lane.a[i], s.a[i]);
+        EXPECT_EQ(lane.L.d_dx[i], s.L.d_dx[i]);
+        EXPECT_EQ(lane.L.d_dy[i], s.L.d_dy[i]);
       }
     }
 
@@ -126,8 +126,7 @@ void check_run_kernels(unsigned seed) {
         dxs[k] = o4x + k * hx;
         dys[k] = o4y + k * hy;
       }
-      GridSums affine4[kLanes];
-      gather_updated_affine4(field.data(), first, kRowNodes, w4, dxs, dys, true, affine4);
+      const GridSums4 affine4 = gather_updated_affine4(field.data(), first, kRowNodes, w4, dxs, dys, true);
       for (int p = 0; p < kLanes; ++p) {
         for (int e = 0; e < 2 * W; ++e) ASSERT_EQ(affine_run[4 * e + p], affine_one[2 * W * p + e]);
         double dx1[W], dy1[W];
@@ -138,10 +137,10 @@ void check_run_kernels(unsigned seed) {
         const GridSums s = gather_updated<W, true>(field.data(), first, kRowNodes, StencilWeights<W>(blocks + 4 * W * p),
                                                    dx1, dy1, true);
         for (int i = 0; i < 2; ++i) {
-          EXPECT_EQ(affine4[p].v[i], s.v[i]);
-          EXPECT_EQ(affine4[p].b_dx[i], s.b_dx[i]);
-          EXPECT_EQ(affine4[p].b_dy[i], s.b_dy[i]);
-          EXPECT_EQ(affine4[p].L.d_dx[i], s.L.d_dx[i]);
+          EXPECT_EQ(affine4.lane(p).v[i], s.v[i]);
+          EXPECT_EQ(affine4.lane(p).b_dx[i], s.b_dx[i]);
+          EXPECT_EQ(affine4.lane(p).b_dy[i], s.b_dy[i]);
+          EXPECT_EQ(affine4.lane(p).L.d_dx[i], s.L.d_dx[i]);
         }
       }
     }

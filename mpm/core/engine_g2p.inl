@@ -1,0 +1,252 @@
+// Part of engine.cpp, included there (one translation unit: each CPU variant of the step inlines every
+// callee of its unit, common/cpu_variants.hpp): g2p, for one particle and for a stencil run of four
+// (stencil_runs.hpp).
+
+namespace mpm::core {
+
+/// Grid-to-particle update (Sulsky et al. 1994, eqs. 21-22; CB-Geo compute_updated_position):
+/// FLIP v += dt sum N a, PIC v = sum N v_new, blended (VelocityTransfer::particle_velocity); APIC
+/// (Affine) v = sum N v_new and the new B_p (Jiang et al. 2015; affine_matrix_at); x += dt sum N v_new.
+/// Flags NaN or runaway velocity (a particle moving more than a cell per step) and particles leaving
+/// the mesh region (an error, or removed when locate_particles is false). With `also` StrainIncrements
+/// (USL) it also stores the strain increment from the updated grid velocity, read from the same nodes.
+/// With RemapMomentum (MUSL) it also maps the updated particle momentum m N v back to the nodes
+/// (Sulsky, Zhou & Schreyer 1995, eq. 20), into the chunk's band, in the same pass (APIC: the particle's
+/// affine field, MomentumContribution at its old position, where B_p was just formed, with the affine
+/// weights p2g formed there). The four particles of a stencil run go together (g2p_run).
+template <class Shape, bool Affine>
+void Engine::g2p_chunk(std::size_t c, G2pAlso also) {
+  double* band = also == G2pAlso::RemapMomentum ? cleared_band(c) : nullptr;
+  merge_.open(c, chunk_[c], chunk_[c + 1]);
+  for (std::size_t k = chunk_[c]; k < chunk_[c + 1];) {
+    if (run_lane_[k] == 0) {
+      g2p_run<Shape, Affine>(c, k, also, band);
+      k += kRunLanes;
+    } else {
+      g2p_particle<Shape, Affine>(c, k, also, band);
+      ++k;
+    }
+  }
+}
+
+/// g2p_chunk's work for the particle at iteration index k, outside a stencil run (`band`: the chunk's
+/// band, MUSL).
+template <class Shape, bool Affine>
+void Engine::g2p_particle(std::size_t c, std::size_t k, G2pAlso also, double* band) {
+  constexpr int W = Shape::kWidth;
+  // Bilinear APIC reads C_p = sum v grad w^T (the velocity gradient) as well (velocity_transfer.hpp).
+  constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
+  const std::uint32_t p = order_[k];
+  const StencilWeights<W> w(&weights_[4 * W * k]);  // not in a run: a block of its own
+  double dxs[W] = {}, dys[W] = {};                   // APIC: node minus particle, per axis
+  if constexpr (Affine)
+    for (int a = 0; a < W; ++a) {
+      dxs[a] = stencil_offset_[2 * k] + a * grid_.hx;
+      dys[a] = stencil_offset_[2 * k + 1] + a * grid_.hy;
+    }
+  const GridSums sums =
+      gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]), static_cast<std::size_t>(nx_), w,
+                                dxs, dys, also == G2pAlso::StrainIncrements || kBilinearAffine);
+  if (also == G2pAlso::StrainIncrements) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
+  const double vgx = sums.v[0], vgy = sums.v[1];
+  const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
+  const double vy = Affine ? vgy : transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
+  nxt_.vx[k] = vx;
+  nxt_.vy[k] = vy;
+  double B_old[4] = {0, 0, 0, 0};
+  if constexpr (Affine) new_affine_matrix<Shape>(k, p, sums, vgx, vgy, also == G2pAlso::RemapMomentum ? B_old : nullptr);
+  if (also == G2pAlso::RemapMomentum) {
+    const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, Double2{B_old[0], B_old[2]},
+                                                       Double2{B_old[1], B_old[3]},
+                                                       Affine ? &affine_weights_[2 * W * k] : nullptr, w);
+    scatter_momentum(band + local_[k], 5 * static_cast<std::size_t>(box_width_), w, momentum);
+  }
+  place_particle(c, k, p, vgx, vgy, vx, vy);
+}
+
+/// g2p_particle for the four particles of the stencil run at iteration indices k .. k + 3, in the lanes
+/// of Double4 (the same operations per lane, so the same bits): the sums from their shared stencil,
+/// MUSL's remapped momentum into it at once.
+template <class Shape, bool Affine>
+void Engine::g2p_run(std::size_t c, std::size_t k, G2pAlso also, double* band) {
+  constexpr int W = Shape::kWidth;
+  constexpr bool kBilinearAffine = Affine && std::is_same_v<Shape, LinearShape>;
+  const StencilWeights4<W> w4(&weights_[4 * W * k]);
+  const auto first = static_cast<std::size_t>(base_[k]);
+  std::uint32_t p[kRunLanes];
+  for (int l = 0; l < kRunLanes; ++l) p[l] = order_[k + l];
+  GridSums4 sums;
+  if constexpr (Affine) {
+    Double4 dxs4[W], dys4[W], ox = splat4(0.0), oy = ox;
+    for (int l = 0; l < kRunLanes; ++l) {
+      ox[l] = stencil_offset_[2 * (k + l)];
+      oy[l] = stencil_offset_[2 * (k + l) + 1];
+    }
+    for (int a = 0; a < W; ++a) {
+      dxs4[a] = ox + a * grid_.hx;
+      dys4[a] = oy + a * grid_.hy;
+    }
+    sums = gather_updated_affine4(updated_.data(), first, static_cast<std::size_t>(nx_), w4, dxs4, dys4,
+                                  also == G2pAlso::StrainIncrements || kBilinearAffine);
+  } else {
+    sums = gather_updated4(updated_.data(), first, static_cast<std::size_t>(nx_), w4,
+                           also == G2pAlso::StrainIncrements);
+  }
+  if (also == G2pAlso::StrainIncrements)
+    for (int l = 0; l < kRunLanes; ++l) sums.L.lane(l).strain_increment(dt_, &dstrain_[3 * (k + l)]);
+  Double4 vx = sums.vx, vy = sums.vy;
+  if constexpr (!Affine) {
+    Double4 vx_old, vy_old;
+    for (int l = 0; l < kRunLanes; ++l) {
+      vx_old[l] = cur_.vx[p[l]];
+      vy_old[l] = cur_.vy[p[l]];
+    }
+    vx = transfer_.particle_velocity(vx_old, sums.vx, sums.ax, dt_);
+    vy = transfer_.particle_velocity(vy_old, sums.vy, sums.ay, dt_);
+  }
+  store4(&nxt_.vx[k], vx);
+  store4(&nxt_.vy[k], vy);
+  alignas(32) double B_old[4][kRunLanes] = {};  // APIC, MUSL: entry e (xx xy yx yy) of lane l's B at x^n
+  if constexpr (Affine)
+    for (int l = 0; l < kRunLanes; ++l) {
+      double b[4];
+      new_affine_matrix<Shape>(k + l, p[l], sums.lane(l), sums.vx[l], sums.vy[l],
+                               also == G2pAlso::RemapMomentum ? b : nullptr);
+      if (also == G2pAlso::RemapMomentum)
+        for (int e = 0; e < 4; ++e) B_old[e][l] = b[e];
+    }
+  if (also == G2pAlso::RemapMomentum) {
+    Double4 m;
+    for (int l = 0; l < kRunLanes; ++l) m[l] = cur_.mass[p[l]];
+    double* band_row = band + local_[k];
+    const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
+    if constexpr (Affine) {
+      const Double4 mB[4] = {m * load4(B_old[0]), m * load4(B_old[1]), m * load4(B_old[2]), m * load4(B_old[3])};
+      scatter_affine_momentum4(band_row, row_stride, w4,
+                               AffineMomentum4<W>(m * vx, m * vy, mB, &affine_weights_[2 * W * k], w4), nullptr);
+    } else {
+      scatter_momentum4(band_row, row_stride, w4, m * vx, m * vy);
+    }
+  }
+  place_run(c, k, p, sums.vx, sums.vy, vx, vy);
+}
+
+/// APIC: the new B_p of the particle at iteration index k (storage index p) into nxt_.affine, from its
+/// stencil sums: B = sum N v (x_i - x_p)^T and C = sum v grad w^T (xx xy yx yy), read at x^(n+1) (vg =
+/// sum N v_new moves it there; affine_matrix_at); with `at_old` also as read at x^n, for MUSL's remap.
+template <class Shape>
+void Engine::new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& sums, double vgx, double vgy,
+                               double* at_old) {
+  const double B[4] = {sums.b_dx[0], sums.b_dy[0], sums.b_dx[1], sums.b_dy[1]};
+  const double C[4] = {sums.L.d_dx[0], sums.L.d_dy[0], sums.L.d_dx[1], sums.L.d_dy[1]};
+  const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;  // place_particle's x^(n+1)
+  affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
+                   grid_.hx, grid_.hy, &nxt_.affine[4 * k]);
+  if (at_old)
+    affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_,
+                     cells_x_ - 1, cells_y_ - 1, grid_.hx, grid_.hy, at_old);
+}
+
+/// g2p's last part for the particle at iteration index k (storage index p): x += dt sum N v_new and the
+/// displacement alike (vg = sum N v_new), the checks (v = the particle's new velocity), its new key
+/// and its record for the re-sort.
+void Engine::place_particle(std::size_t c, std::size_t k, std::uint32_t p, double vgx, double vgy, double vx,
+                            double vy) {
+  const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
+  const double h = std::min(grid_.hx, grid_.hy);
+  nxt_.x[k] = x;
+  nxt_.y[k] = y;
+  nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;
+  nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
+  const double speed = std::sqrt(vx * vx + vy * vy);
+  // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
+  // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
+  // support reaches the constrained nodes and one moving node: N = l/4 at the boundary, so it can
+  // drift past it by a fraction of lp). Linear particles must stay inside the region. The test is
+  // false for a NaN coordinate, so with a speed within one cell per step it implies finite values;
+  // inside the region itself (most particles) the margin (>= 0) is not needed.
+  const auto within = [&](double mx, double my) {
+    return x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
+  };
+  const bool on_grid =
+      within(0.0, 0.0) || within(gimp_margin_ * cur_.lx[p] * grid_.hx, gimp_margin_ * cur_.ly[p] * grid_.hy);
+  const auto place_on_grid = [&] {
+    nxt_.key[k] = cell_key(x, y);
+    merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
+  };
+  if (on_grid && speed * dt_ <= h) {
+    place_on_grid();
+    return;
+  }
+  if (!std::isfinite(vx) || !std::isfinite(vy) || !std::isfinite(x) || !std::isfinite(y)) {
+    report(c, k, ProblemKind::VelocityNotFinite, cur_.id[p], vx, vy);
+  } else if (!(speed * dt_ <= h)) {  // an overflowing speed too
+    report(c, k, ProblemKind::RunawayVelocity, cur_.id[p], speed, h / dt_);
+  }
+  if (!on_grid) {
+    nxt_.key[k] = kRemoved;
+    merge_.record(c, k, OrderMerge::Status::Removed);
+    if (locate_) report(c, k, ProblemKind::LeftTheGrid, cur_.id[p], x, y);
+  } else {
+    place_on_grid();
+  }
+}
+
+/// place_particle for the four particles of the stencil run at iteration indices k .. k + 3 (storage
+/// indices p[0..3]), in the lanes of Double4 (vg = sum N v_new, v = the new velocities): the same
+/// operations lane by lane (lanes.hpp), so the same bits. When one of them is outside the mesh region
+/// proper or too fast, all four go through place_particle in order instead (its margins, reports and
+/// removal).
+void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Double4 vgx, Double4 vgy, Double4 vx,
+                       Double4 vy) {
+  static_assert(kRunLanes == 4, "a stencil run is one Double4");
+  Double4 x0, y0, ux0, uy0;
+  for (int l = 0; l < kRunLanes; ++l) {
+    x0[l] = cur_.x[p[l]];
+    y0[l] = cur_.y[p[l]];
+    ux0[l] = cur_.ux[p[l]];
+    uy0[l] = cur_.uy[p[l]];
+  }
+  const Double4 dt = splat4(dt_);
+  const Double4 x = x0 + dt * vgx, y = y0 + dt * vgy;
+  const Double4 speed = constitutive::sqrt_each(vx * vx + vy * vy);
+  const auto fast = (x >= splat4(grid_.xmin)) & (x <= splat4(grid_.xmax)) & (y >= splat4(grid_.ymin)) &
+                    (y <= splat4(grid_.ymax)) & (speed * dt <= splat4(std::min(grid_.hx, grid_.hy)));
+  if (!(fast[0] & fast[1] & fast[2] & fast[3]) || !keys_fit_int32_) {
+    for (int l = 0; l < kRunLanes; ++l) place_particle(c, k + l, p[l], vgx[l], vgy[l], vx[l], vy[l]);
+    return;
+  }
+  // The destinations first: each store4 (a memcpy) could alias a vector's own pointers.
+  double* const to[4] = {&nxt_.x[k], &nxt_.y[k], &nxt_.ux[k], &nxt_.uy[k]};
+  std::int64_t* const key_to = &nxt_.key[k];
+  std::int64_t key_was[kRunLanes];
+  for (int l = 0; l < kRunLanes; ++l) key_was[l] = cur_.key[p[l]];
+  store4(to[0], x);
+  store4(to[1], y);
+  store4(to[2], ux0 + dt * vgx);
+  store4(to[3], uy0 + dt * vgy);
+  const Long4 keys = cell_keys(x, y);
+  __builtin_memcpy(key_to, &keys, sizeof keys);
+  for (int l = 0; l < kRunLanes; ++l)
+    merge_.record(c, k + l, keys[l] == key_was[l] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
+}
+
+/// cell_key of four positions inside the mesh region, in lanes (32-bit keys: keys_fit_int32_).
+Long4 Engine::cell_keys(Double4 x, Double4 y) const {
+  const Double4 sx = (x - splat4(grid_.x0)) * splat4(inv_hx_), sy = (y - splat4(grid_.y0)) * splat4(inv_hy_);
+  const auto clamp = [](Int4 v, int hi) {
+    v = v < 0 ? Int4{0, 0, 0, 0} : v;
+    return v > hi ? Int4{hi, hi, hi, hi} : v;
+  };
+  const Int4 i = clamp(__builtin_convertvector(sx, Int4), cells_x_ - 1);  // truncation, as static_cast<int>
+  const Int4 j = clamp(__builtin_convertvector(sy, Int4), cells_y_ - 1);
+  Int4 key = 4 * (i + j * cells_x_);
+  if (grid_.cell_type == io::CellType::Gimp16) {  // the quadrant, GimpShape::nearest_node(s) > i
+    const Double4 half = splat4(0.5);
+    key += (__builtin_convertvector(sx + half, Int4) > i) & 1;
+    key += (__builtin_convertvector(sy + half, Int4) > j) & 2;
+  }
+  return __builtin_convertvector(key, Long4);
+}
+
+}  // namespace mpm::core
