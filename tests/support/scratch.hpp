@@ -1,18 +1,45 @@
 #pragma once
 // Scratch folders shared by the C++ tests (one folder per test process, so test binaries running in
 // parallel never share files).
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace test_support {
 
-/// <system temp folder>/<prefix>_<pid>, created if missing (its files are kept).
+/// The scratch folders of this process, removed when it exits with every test passed: a failed test's
+/// files stay to be looked at, and a passing suite leaves nothing behind (gtest_discover_tests runs
+/// one process per test, so the folders would otherwise pile up in the temp folder).
+class ScratchCleanup {
+ public:
+  static void add(const std::filesystem::path& dir) {
+    ::testing::UnitTest::GetInstance();  // constructed first, so destroyed after the cleanup below
+    static ScratchCleanup cleanup;
+    const std::lock_guard<std::mutex> lock(cleanup.mutex_);
+    cleanup.dirs_.push_back(dir);
+  }
+  ~ScratchCleanup() {
+    if (!::testing::UnitTest::GetInstance()->Passed()) return;
+    std::error_code ec;
+    for (const auto& dir : dirs_) std::filesystem::remove_all(dir, ec);
+  }
+
+ private:
+  ScratchCleanup() = default;
+  std::mutex mutex_;
+  std::vector<std::filesystem::path> dirs_;
+};
+
+/// <system temp folder>/<prefix>_<pid>, created if missing; its files are kept until the process
+/// exits (ScratchCleanup).
 inline std::filesystem::path scratch_folder(const std::string& prefix) {
   const auto dir = std::filesystem::temp_directory_path() / (prefix + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  if (std::filesystem::create_directories(dir)) ScratchCleanup::add(dir);
   return dir;
 }
 
