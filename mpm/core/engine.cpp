@@ -59,7 +59,8 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
   nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
   const bool gimp = grid_.cell_type == io::CellType::Gimp16;
   gimp_margin_ = gimp ? 1.0 : 0.0;
-  keys_fit_int32_ = 4.0 * cells_x_ * cells_y_ < 2147483647.0;
+  // cell_keys computes in 32 bits: the largest key is below 4 x cells.
+  keys_fit_int32_ = 4.0 * cells_x_ * cells_y_ <= std::numeric_limits<std::int32_t>::max();
   if (gimp) {
     // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
     const double tol = 1e-9;
