@@ -17,7 +17,8 @@
 //    --profile scheme transfer steps threads: just `steps` steps of one configuration (for perf stat /
 //    perf record: the difference of two step counts gives the instructions per particle-step).
 //    --checksum: a hash of every particle's state after a few steps for each scheme, transfer and
-//    thread count (what "bit-identical" is checked with before and after a change of the kernels).
+//    thread count, and with the stencil runs off (what "bit-identical" is checked with before and after
+//    a change of the kernels; every line of one scheme and transfer must agree).
 // 2. Speed against error: the vibrating bar (period error vs the analytical mode) and the column's
 //    runout at t = 2 s against the finest resolution run here, for a few resolutions.
 #include <algorithm>
@@ -197,19 +198,24 @@ std::uint64_t state_hash(const mpm::core::Simulation& sim) {
   return h;
 }
 
-/// The state hash of the paper column after `steps` steps for every scheme, transfer and thread count.
+/// The state hash of the paper column after `steps` steps for every scheme, transfer and thread count,
+/// and on 1 thread with the stencil runs off (every particle through the one-particle kernels).
 void checksum(int steps) {
   std::printf("== State hash of the paper column after %d steps (bit-identity check) ==\n", steps);
+  struct Execution {
+    int threads;
+    bool stencil_runs;
+  };
   for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL})
     for (auto transfer : {mpm::io::Transfer::FLIP, mpm::io::Transfer::APIC})
-      for (int threads : {1, 2}) {
+      for (const Execution e : {Execution{1, true}, Execution{2, true}, Execution{1, false}}) {
         Deck deck = paper_column(1.0, 4, scheme);
         deck.analysis.transfer = transfer;
-        mpm::core::Simulation sim(deck, threads);
+        mpm::core::Simulation sim(deck, e.threads, mpm::core::ExecutionOptions{e.stencil_runs});
         for (int i = 0; i < steps; ++i) sim.step();
-        std::printf("%-4s %-4s threads %d: %016llx\n", scheme_name(scheme),
-                    transfer == mpm::io::Transfer::APIC ? "APIC" : "FLIP", threads,
-                    static_cast<unsigned long long>(state_hash(sim)));
+        std::printf("%-4s %-4s threads %d%s: %016llx\n", scheme_name(scheme),
+                    transfer == mpm::io::Transfer::APIC ? "APIC" : "FLIP", e.threads,
+                    e.stencil_runs ? "" : ", no stencil runs", static_cast<unsigned long long>(state_hash(sim)));
       }
 }
 

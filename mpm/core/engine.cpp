@@ -46,7 +46,7 @@ void ParticleArrays::resize(std::size_t n) {
 // Construction
 // ---------------------------------------------------------------------------------------------------
 
-Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
+Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : grid_(deck.grid) {
   const io::Analysis& an = deck.analysis;
   nx_ = grid_.nodes_x;
   ny_ = grid_.nodes_y;
@@ -72,7 +72,7 @@ Engine::Engine(const io::Deck& deck, int threads) : grid_(deck.grid) {
 
   scheme_ = an.scheme;
   transfer_ = VelocityTransfer::from(an);
-  stencil_runs_ = common::wide_vector_kernels();
+  stencil_runs_ = options.stencil_runs && common::wide_vector_kernels();
   locate_ = an.locate_particles;
   damping_ = an.cundall_damping;
   if (!(damping_ >= 0.0 && damping_ < 1.0))

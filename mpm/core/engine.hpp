@@ -22,6 +22,7 @@
 #include "mpm/core/materials.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "mpm/core/order_merge.hpp"
+#include "mpm/core/simulation.hpp"
 #include "mpm/core/stencil_runs.hpp"
 #include "mpm/core/stress_remedy.hpp"
 #include "mpm/core/velocity_transfer.hpp"
@@ -76,7 +77,7 @@ struct ParticleArrays {
 
 class Engine {
  public:
-  Engine(const io::Deck& deck, int threads);
+  Engine(const io::Deck& deck, int threads, ExecutionOptions options = {});
   void step();
   long long step_index() const { return step_index_; }
   double dt() const { return dt_; }
@@ -233,8 +234,8 @@ class Engine {
   /// kernels load an entry of all four at once (stencil_runs.hpp).
   std::vector<double> weights_;
   std::vector<std::int32_t> run_lane_;  ///< per iteration index: its lane in its stencil run, -1 outside one
-  /// Whether p2g forms stencil runs: with 4-double vector registers (common::wide_vector_kernels); the
-  /// results are the same either way, bit for bit.
+  /// Whether p2g forms stencil runs: with 4-double vector registers (common::wide_vector_kernels) unless
+  /// ExecutionOptions turn them off; the results are the same either way, bit for bit.
   bool stencil_runs_ = true;
   static constexpr int kRunLanes = 4;
   /// The weights of the particle at iteration index k, in a run or not.

@@ -4,7 +4,8 @@
 
 namespace mpm::core {
 
-Simulation::Simulation(const io::Deck& deck, int threads) : engine_(std::make_unique<Engine>(deck, threads)) {}
+Simulation::Simulation(const io::Deck& deck, int threads, ExecutionOptions options)
+    : engine_(std::make_unique<Engine>(deck, threads, options)) {}
 Simulation::~Simulation() = default;
 Simulation::Simulation(Simulation&&) noexcept = default;
 Simulation& Simulation::operator=(Simulation&&) noexcept = default;

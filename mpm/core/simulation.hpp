@@ -43,12 +43,19 @@ namespace mpm::core {
 
 class Engine;  // implementation (mpm/core/engine.hpp)
 
+/// How the engine computes, where the choice cannot change a result (tests and benchmarks compare them).
+struct ExecutionOptions {
+  /// Four particles on one stencil in the lanes of a 4-double vector (stencil_runs.hpp) where the CPU
+  /// has 256-bit registers; false: every particle through the one-particle kernels. Bit for bit the same.
+  bool stencil_runs = true;
+};
+
 class Simulation {
  public:
   /// Builds particles, grid and materials from `deck`. `threads` <= 0: OpenMP's default.
   /// Applies CB-Geo's defaults to particles with volume <= 0 (volume = cell area / particles in the
   /// cell, mass = density * volume, nsize = 2 / sqrt(particles in the cell)).
-  explicit Simulation(const io::Deck& deck, int threads = 0);
+  explicit Simulation(const io::Deck& deck, int threads = 0, ExecutionOptions options = {});
   ~Simulation();
   Simulation(Simulation&&) noexcept;
   Simulation& operator=(Simulation&&) noexcept;
