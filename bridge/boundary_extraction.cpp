@@ -80,7 +80,10 @@ ExtractedBoundaries extract_boundaries(const FemModel& model) {
   out.from_model = model.has_constraints;
   if (!model.boundary_devices.empty()) {
     std::string tags;
-    for (std::size_t i = 0; i < model.boundary_devices.size() && i < 8; ++i) tags += (i ? " " : "") + std::to_string(model.boundary_devices[i]);
+    for (std::size_t i = 0; i < model.boundary_devices.size() && i < 8; ++i) {
+      if (i) tags += ' ';
+      tags += std::to_string(model.boundary_devices[i]);
+    }
     if (model.boundary_devices.size() > 8) tags += " ... (" + std::to_string(model.boundary_devices.size()) + " elements)";
     out.warnings.push_back("zeroLength elements " + tags + " (springs and dashpots of the FEM boundary) have no MPM "
                            "counterpart and are not transferred; the MPM boundaries come from the supports and options");

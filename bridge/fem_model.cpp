@@ -204,7 +204,7 @@ bool add_element_fast(FemModel& model, const FlatEntry& f, const std::string& wh
   else if (type->text == "FourNodeQuad" || type->text == "quad") e.kind = ElementKind::Quad;
   else if (type->text == "Tri31") e.kind = ElementKind::Tri31;
   else return false;
-  if (nodes->count != static_cast<std::size_t>(node_count(e.kind))) return false;
+  if (nodes->count != node_count(e.kind)) return false;
   for (int a = 0; a < node_count(e.kind); ++a) {
     const double v = nodes->items[static_cast<std::size_t>(a)];
     if (v != std::floor(v) || std::abs(v) > 9e15) return false;
