@@ -240,9 +240,8 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
   bucket_.resize(4 * static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
   const std::size_t max_chunks = n / kChunkParticles + 2;
   chunk_.resize(max_chunks + 1);
-  chunk_row0_.resize(max_chunks);
-  chunk_row1_.resize(max_chunks);
-  chunk_offset_.resize(max_chunks);
+  bands_.resize(max_chunks);
+  row_sums_.resize(static_cast<std::size_t>(threads_) * 5 * static_cast<std::size_t>(nx_));
   row_first_chunk_.resize(static_cast<std::size_t>(ny_));
   local_.resize(n);
   mass_.assign(nodes_, 0.0);
@@ -335,37 +334,12 @@ void Engine::resort_particles() {
   cut_chunks();
 }
 
-/// The active node box and the chunks of the sorted particles (order_).
+/// The chunks of the sorted particles (order_), each chunk's band and the active node box (their union).
 void Engine::cut_chunks() {
   const std::size_t n = order_.size();
-  int cmin_i = cells_x_, cmax_i = -1, cmin_j = cells_y_, cmax_j = -1;
-#pragma omp parallel num_threads(threads_) reduction(min : cmin_i, cmin_j) reduction(max : cmax_i, cmax_j)
-  {
-    std::int64_t previous_cell = kRemoved;  // a cell's particles are consecutive: one division per cell
-#pragma omp for schedule(static)
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::int64_t cell = cell_of(cur_.key[order_[k]]);
-      if (cell == previous_cell) continue;
-      previous_cell = cell;
-      const int i = static_cast<int>(cell % cells_x_), j = static_cast<int>(cell / cells_x_);
-      cmin_i = std::min(cmin_i, i);
-      cmax_i = std::max(cmax_i, i);
-      cmin_j = std::min(cmin_j, j);
-      cmax_j = std::max(cmax_j, j);
-    }
-  }
-  // Active node box: every node a particle's stencil can reach (cell - 1 .. cell + 2).
-  if (n == 0) {
-    bi0_ = bi1_ = bj0_ = bj1_ = 0;
-  } else {
-    bi0_ = std::max(cmin_i - 1, 0);
-    bi1_ = std::min(cmax_i + 3, nx_);
-    bj0_ = std::max(cmin_j - 1, 0);
-    bj1_ = std::min(cmax_j + 3, ny_);
-  }
   // Chunks of about kChunkParticles particles, cut at cell boundaries. Their number and extent depend
   // only on the particle state (not on the thread count): threads take chunks dynamically, each chunk
-  // scatters into its own band of grid rows, and bands are summed in chunk order.
+  // scatters into its own band, and bands are summed in chunk order.
   chunks_ = n == 0 ? 0 : (n + kChunkParticles - 1) / kChunkParticles;
   chunk_[0] = 0;
   for (std::size_t c = 1; c < chunks_; ++c) {
@@ -374,24 +348,56 @@ void Engine::cut_chunks() {
     chunk_[c] = k;
   }
   chunk_[chunks_] = n;
-  box_width_ = bi1_ - bi0_;
+  // Each chunk's band: every node its particles' stencils can reach (cell - 1 .. cell + 2 per axis).
+  const auto chunks = static_cast<std::ptrdiff_t>(chunks_);
+#pragma omp parallel for num_threads(threads_) schedule(static)
+  for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+    int imin = cells_x_, imax = -1, jmin = cells_y_, jmax = -1;
+    std::int64_t previous_cell = kRemoved;  // a cell's particles are consecutive: one division per cell
+    for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
+      const std::int64_t cell = cell_of(cur_.key[order_[k]]);
+      if (cell == previous_cell) continue;
+      previous_cell = cell;
+      const int i = static_cast<int>(cell % cells_x_), j = static_cast<int>(cell / cells_x_);
+      imin = std::min(imin, i);
+      imax = std::max(imax, i);
+      jmin = std::min(jmin, j);
+      jmax = std::max(jmax, j);
+    }
+    Band& b = bands_[static_cast<std::size_t>(c)];
+    if (imax < 0) {  // an empty chunk (its cell's particles all went to the chunk before)
+      b = Band{};
+      continue;
+    }
+    b.i0 = std::max(imin - 1, 0);
+    b.i1 = std::min(imax + 3, nx_);
+    b.j0 = std::max(jmin - 1, 0);
+    b.j1 = std::min(jmax + 3, ny_);
+  }
+  // The active node box: the union of the bands.
+  bi0_ = bj0_ = 0;
+  bi1_ = bj1_ = 0;
+  if (chunks_ > 0) {
+    bi0_ = nx_;
+    bj0_ = ny_;
+    for (std::size_t c = 0; c < chunks_; ++c) {
+      if (bands_[c].size() == 0) continue;
+      bi0_ = std::min(bi0_, bands_[c].i0);
+      bi1_ = std::max(bi1_, bands_[c].i1);
+      bj0_ = std::min(bj0_, bands_[c].j0);
+      bj1_ = std::max(bj1_, bands_[c].j1);
+    }
+  }
   std::size_t offset = 0;
   for (std::size_t c = 0; c < chunks_; ++c) {
-    if (chunk_[c] == chunk_[c + 1]) {
-      chunk_row0_[c] = chunk_row1_[c] = bj0_;
-    } else {
-      const int j_first = static_cast<int>(cell_of(cur_.key[order_[chunk_[c]]]) / cells_x_);
-      const int j_last = static_cast<int>(cell_of(cur_.key[order_[chunk_[c + 1] - 1]]) / cells_x_);
-      chunk_row0_[c] = std::max(j_first - 1, bj0_);
-      chunk_row1_[c] = std::min(j_last + 3, bj1_);
-    }
-    chunk_offset_[c] = offset;
-    offset += static_cast<std::size_t>(chunk_row1_[c] - chunk_row0_[c]) * static_cast<std::size_t>(box_width_) * 5;
+    bands_[c].offset = offset;
+    offset += bands_[c].size();
   }
   if (pool_.size() < offset) pool_.resize(offset);  // grows rarely; no allocation in a steady state
+  // Chunks are sorted by row, so their first rows ascend.
   std::size_t first = 0;
   for (int j = bj0_; j < bj1_; ++j) {
-    while (first < chunks_ && chunk_row1_[first] <= j) ++first;
+    while (first < chunks_ && bands_[first].j1 <= j) ++first;
     row_first_chunk_[static_cast<std::size_t>(j)] = first;
   }
 }
@@ -516,8 +522,8 @@ void Engine::g2p(G2pAlso also) {
 }
 
 double* Engine::cleared_band(std::size_t c) {
-  double* g = pool_.data() + chunk_offset_[c];
-  std::fill_n(g, static_cast<std::size_t>(chunk_row1_[c] - chunk_row0_[c]) * static_cast<std::size_t>(box_width_) * 5, 0.0);
+  double* g = pool_.data() + bands_[c].offset;
+  std::fill_n(g, bands_[c].size(), 0.0);
   return g;
 }
 
@@ -531,7 +537,7 @@ template <class Shape, bool Affine>
 void Engine::p2g_chunk(std::size_t c, GridFields fields) {
   constexpr int W = Shape::kWidth;
   double* g = cleared_band(c);
-  const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
+  const std::size_t row_stride = bands_[c].row_stride();
   const bool shape_functions = fields.mass, mass_momentum = fields.mass, forces = fields.forces;
   const bool forces_from_next = forces && !mass_momentum;
   const std::size_t k1 = chunk_[c + 1];
@@ -549,19 +555,28 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
 
 // scatter_particle, evaluate_shape_functions, evaluate_run and scatter_run: engine_p2g.inl (end of file).
 
-/// Sums the chunks' bands over one row of the active box, in chunk order (deterministic for any
-/// thread count).
+/// Sums the chunks' bands over row j of the active box into `sums` (`values` per node, 5 apart, from
+/// node bi0_), each node in chunk order: the same sums for any thread count. A band that does not reach
+/// a node adds nothing to it, so skipping it changes no bit (a sum that starts at +0 never becomes -0).
+void Engine::sum_bands_of_row(int j, int values, double* sums) const {
+  std::fill_n(sums, 5 * static_cast<std::size_t>(bi1_ - bi0_), 0.0);
+  for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
+    const Band& band = bands_[c];
+    if (band.size() == 0 || j >= band.j1) continue;
+    if (band.j0 > j) break;  // bands are ordered by row
+    const double* row = pool_.data() + band.offset + static_cast<std::size_t>(j - band.j0) * band.row_stride();
+    double* s = sums + 5 * static_cast<std::size_t>(band.i0 - bi0_);
+    for (int i = band.i0; i < band.i1; ++i, row += 5, s += 5)
+      for (int f = 0; f < values; ++f) s[f] += row[f];
+  }
+}
+
+/// The grid fields of row j from the chunks' bands (sum_bands_of_row).
 void Engine::reduce_row(int j, GridFields summed) {
-  for (int i = bi0_; i < bi1_; ++i) {
+  double* s = &row_sums_[5 * static_cast<std::size_t>(nx_) * static_cast<std::size_t>(omp_get_thread_num())];
+  sum_bands_of_row(j, 5, s);
+  for (int i = bi0_; i < bi1_; ++i, s += 5) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-    double s[5] = {0, 0, 0, 0, 0};
-    for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
-      if (chunk_row0_[c] > j && chunk_[c] != chunk_[c + 1]) break;  // bands are ordered by row
-      if (j < chunk_row0_[c] || j >= chunk_row1_[c]) continue;
-      const double* gn = pool_.data() + chunk_offset_[c] +
-                         5 * (static_cast<std::size_t>(j - chunk_row0_[c]) * box_width_ + (i - bi0_));
-      for (int f = 0; f < 5; ++f) s[f] += gn[f];
-    }
     if (summed.mass) mass_[n] = s[0];
     if (summed.momentum) {
       momentum_[2 * n] = s[1];
@@ -753,7 +768,7 @@ void Engine::scatter_remedy_values(std::size_t c) {
   constexpr int W = Shape::kWidth;
   const NodalProjection proj = nodal_projection(smoothing_);
   double* g = cleared_band(c);
-  const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
+  const std::size_t row_stride = bands_[c].row_stride();
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const StencilWeights<W> sw = stencil_weights<W>(k);
     const double *wx = sw.wx, *wy = sw.wy;
@@ -776,16 +791,10 @@ void Engine::scatter_remedy_values(std::size_t c) {
 /// Nodal remedy, 2/3: nodal value = sum w N value / sum w N (summed in chunk order).
 void Engine::nodal_remedy_row(int j) {
   const NodalProjection proj = nodal_projection(smoothing_);
-  for (int i = bi0_; i < bi1_; ++i) {
+  double* s = &row_sums_[5 * static_cast<std::size_t>(nx_) * static_cast<std::size_t>(omp_get_thread_num())];
+  sum_bands_of_row(j, 4, s);
+  for (int i = bi0_; i < bi1_; ++i, s += 5) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
-    double s[4] = {0, 0, 0, 0};
-    for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
-      if (chunk_row0_[c] > j && chunk_[c] != chunk_[c + 1]) break;
-      if (j < chunk_row0_[c] || j >= chunk_row1_[c]) continue;
-      const double* gn = pool_.data() + chunk_offset_[c] +
-                         5 * (static_cast<std::size_t>(j - chunk_row0_[c]) * box_width_ + (i - bi0_));
-      for (int f = 0; f < 4; ++f) s[f] += gn[f];
-    }
     const double weight = proj.volume_weighted ? s[3] : mass_[n];
     const double inv_w = weight > (proj.volume_weighted ? 0.0 : mass_tolerance_) ? 1.0 / weight : 0.0;
     for (int f = 0; f < proj.values; ++f) nodal_remedy_[3 * n + f] = s[f] * inv_w;

@@ -125,6 +125,7 @@ class Engine {
   void scatter_particle(std::size_t k, double* g, std::size_t row_stride, bool mass_momentum, bool forces,
                         bool forces_from_next);
   void reduce_row(int j, GridFields summed);
+  void sum_bands_of_row(int j, int values, double* sums) const;
   void nodal_velocity_row(int j);
   void integrate_row(int j);
   template <class Shape, bool Affine>
@@ -184,13 +185,20 @@ class Engine {
   std::vector<double> velocity_;  ///< 2 per node: momentum / mass, constraints as the strain rate reads them
   std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
   std::vector<double> nodal_remedy_;  ///< 3 per node: the values a nodal remedy smooths (stress_remedy.hpp)
-  /// Per chunk: a band of grid rows [chunk_row0_, chunk_row1_) x box columns, 5 values per node
-  /// (m, px, py, fx, fy), at chunk_offset_ in pool_; summed in chunk order by reduce_row.
+  /// A chunk's band of the grid: the nodes [i0, i1) x [j0, j1) its particles' stencils reach, 5 values
+  /// per node (m, px, py, fx, fy), row by row from `offset` in pool_; summed in chunk order by
+  /// reduce_row. Bounded in both directions, so a band holds about as many nodes as the chunk's cells
+  /// touch, however wide the active box (a long, thin runout).
+  struct Band {
+    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+    std::size_t offset = 0;
+    std::size_t row_stride() const { return 5 * static_cast<std::size_t>(i1 - i0); }
+    std::size_t size() const { return row_stride() * static_cast<std::size_t>(j1 - j0); }
+  };
+  std::vector<Band> bands_;
   std::vector<double> pool_;
-  std::vector<int> chunk_row0_, chunk_row1_;
-  std::vector<std::size_t> chunk_offset_;
   std::vector<std::size_t> row_first_chunk_;  ///< per node row: the first chunk whose band reaches it
-  int box_width_ = 0;                             ///< bi1_ - bi0_
+  std::vector<double> row_sums_;              ///< per thread: 5 values per node of one row (reduce_row)
   /// Small-mass cutoff of USL and of APIC on bilinear cells (kg per unit thickness; otherwise 0): a node with less mass than 2 % of a full node of the
   /// lightest material (0.02 rho_min hx hy) is accelerated by gravity alone: its internal force
   /// -sum V grad N . sigma is dropped (the body force per unit mass is g at every node). Why: at a node of mass fraction xi = m / (rho h^2) that only a particle's edge touches,

@@ -59,7 +59,7 @@ void Engine::g2p_particle(std::size_t c, std::size_t k, G2pAlso also, double* ba
     const MomentumContribution<Shape, Affine> momentum(cur_.mass[p], vx, vy, Double2{B_old[0], B_old[2]},
                                                        Double2{B_old[1], B_old[3]},
                                                        Affine ? &affine_weights_[2 * W * k] : nullptr, w);
-    scatter_momentum(band + local_[k], 5 * static_cast<std::size_t>(box_width_), w, momentum);
+    scatter_momentum(band + local_[k], bands_[c].row_stride(), w, momentum);
   }
   place_particle(c, k, p, vgx, vgy, vx, vy);
 }
@@ -119,7 +119,7 @@ void Engine::g2p_run(std::size_t c, std::size_t k, G2pAlso also, double* band) {
     Double4 m;
     for (int l = 0; l < kRunLanes; ++l) m[l] = cur_.mass[p[l]];
     double* band_row = band + local_[k];
-    const std::size_t row_stride = 5 * static_cast<std::size_t>(box_width_);
+    const std::size_t row_stride = bands_[c].row_stride();
     if constexpr (Affine) {
       const Double4 mB[4] = {m * load4(B_old[0]), m * load4(B_old[1]), m * load4(B_old[2]), m * load4(B_old[3])};
       scatter_affine_momentum4(band_row, row_stride, w4,

@@ -116,7 +116,8 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
 void Engine::set_stencil(std::size_t c, std::size_t k, int bi, int bj, std::int32_t lane) {
   run_lane_[k] = lane;
   base_[k] = bi + bj * nx_;
-  local_[k] = static_cast<std::int32_t>(5 * ((bj - chunk_row0_[c]) * box_width_ + (bi - bi0_)));
+  const Band& band = bands_[c];
+  local_[k] = static_cast<std::int32_t>(5 * ((bj - band.j0) * (band.i1 - band.i0) + (bi - band.i0)));
 }
 
 /// p2g of the four particles of a stencil run from k (APIC: the momentum with the particles' matrices),
