@@ -338,10 +338,10 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
   const auto nodal_field = [&](const std::filesystem::path& file, double scale) {
     const RecorderFile f(file);
     check_node_width(f, f.rows().size() - 1);
-    const auto v = f.values(matching_row(f, disp, transfer));
+    const auto v = f.values(matching_row(f, disp, transfer), scale);
     std::vector<Vec2> field(nn, Vec2::Zero());
     for (std::size_t k = 0; k < node_tags.size(); ++k)
-      field[static_cast<std::size_t>(model.node_index(node_tags[k]))] = scale * Vec2(v[2 * k], v[2 * k + 1]);
+      field[static_cast<std::size_t>(model.node_index(node_tags[k]))] = Vec2(v[2 * k], v[2 * k + 1]);
     return field;
   };
   if (!options.vel.empty()) st.velocity = nodal_field(options.vel, 1.0);
@@ -432,7 +432,14 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
       if (comps == 3) out6 = {s[0], s[1], options.plane_stress ? 0.0 : nu * (s[0] + s[1]), s[2], 0, 0};
       else if (comps == 5) out6 = {s[0], s[1], s[2], s[3], 0, 0};
       else out6 = {s[0], s[1], s[2], s[3], s[4], s[5]};
-      for (double& c : out6) c *= factor;
+      for (double& c : out6) {
+        c *= factor;
+        if (!std::isfinite(c))
+          throw common::InputError(stress.where(stress_row),
+                                   "element " + std::to_string(st.elements[e].tag) + ", Gauss point " +
+                                       std::to_string(g - st.gauss_offset[e] + 1) +
+                                       ": its stress is not finite in Pa (values too large for double precision)");
+      }
     }
   }
   if (comps == 3 && options.plane_stress)

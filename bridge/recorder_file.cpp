@@ -172,7 +172,7 @@ std::size_t RecorderFile::find_row(long n) const {
   return static_cast<std::size_t>(index);
 }
 
-std::vector<double> RecorderFile::values(std::size_t index) const {
+std::vector<double> RecorderFile::values(std::size_t index, double scale) const {
   const Row& row = rows_.at(index);
   // A recorder ends every row with a newline: a last row without one was cut while being written (a
   // number in it may be cut short and still parse).
@@ -190,7 +190,10 @@ std::vector<double> RecorderFile::values(std::size_t index) const {
     if (!std::isfinite(v))
       throw common::InputError(where(index), "value " + std::to_string(column) + " is '" + std::string(begin, end) +
                                                  "' (the FEM state in this row is not finite: the analysis diverged?)");
-    if (!skip) out.push_back(v);
+    if (!skip && !std::isfinite(v * scale))
+      throw common::InputError(where(index), "value " + std::to_string(column) + " is '" + std::string(begin, end) +
+                                                 "', not finite in SI units (times " + common::number_text(scale, 6) + ")");
+    if (!skip) out.push_back(v * scale);
     skip = false;
   });
   return out;

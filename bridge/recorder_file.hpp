@@ -48,8 +48,9 @@ class RecorderFile {
   /// Index of row `n` (1-based; negative counts from the end: -1 is the last row). Throws InputError.
   std::size_t find_row(long n) const;
 
-  /// The values of row `index`, time column excluded.
-  std::vector<double> values(std::size_t index) const;
+  /// The values of row `index`, time column excluded, each times `scale` (a unit conversion); a value
+  /// that is not finite, or becomes so when scaled, is an InputError naming the file, line and column.
+  std::vector<double> values(std::size_t index, double scale = 1.0) const;
 
   /// Significant digits printed in the time of row `index` (at least 6: a recorder prints 6 unless
   /// `-precision` says otherwise, and "0.5" stands for 0.500000).

@@ -2,12 +2,39 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
+
+#include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace bridge {
 namespace {
 
 double norm2(const Stress6& s) {
   return s[0] * s[0] + s[1] * s[1] + s[2] * s[2] + 2 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]);
+}
+
+/// Every figure of the report is finite, or the FEM values were too large for double precision (a
+/// gravity or stress near 1e308 passes every range check and overflows in the sums): an InputError
+/// naming the figure, so that no report or deck holds an infinity (JSON null).
+void check_finite(const TransferReport& r, double gravity) {
+  const std::pair<const char*, double> figures[] = {
+      {"FEM mass", r.fem.mass},
+      {"FEM momentum", r.fem.momentum.x() + r.fem.momentum.y()},
+      {"FEM kinetic energy", r.fem.kinetic_energy},
+      {"FEM potential energy (m g y)", r.fem.potential_energy},
+      {"particles' mass", r.particles.mass},
+      {"particles' momentum", r.particles.momentum.x() + r.particles.momentum.y()},
+      {"particles' kinetic energy", r.particles.kinetic_energy},
+      {"particles' potential energy (m g y)", r.particles.potential_energy},
+      {"stress difference (sum of squared stresses)", r.stress_rms_relative + r.stress_max_relative + r.stress_max_abs}};
+  for (const auto& [what, value] : figures)
+    if (!std::isfinite(value))
+      throw common::InputError("the transferred state",
+                               std::string("its ") + what + " is not finite: the FEM values (gravity " +
+                                   common::number_text(gravity, 6) +
+                                   " m/s2, densities, stresses, velocities) are too large for double precision");
 }
 
 }  // namespace
@@ -77,6 +104,7 @@ TransferReport make_report(const TransferState& state, const std::vector<Stress6
   }
   rep.stress_rms_relative = sum_s2 > 0 ? std::sqrt(sum_d2 / sum_s2) : 0;
   rep.stress_max_relative = max_s > 0 ? rep.stress_max_abs / max_s : 0;
+  check_finite(rep, g);
   return rep;
 }
 

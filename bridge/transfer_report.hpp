@@ -32,6 +32,7 @@ struct TransferReport {
 /// FEM totals use the row-sum lumped nodal masses m_a = sum_e rho_e int N_a dA (reference
 /// configuration, 2x2 Gauss); the stress difference compares each FEM Gauss point's stress with the
 /// particles' field (sum_a N_a sigma_a) at the same point, |s| = sqrt(s:s) with the full tensor.
+/// Throws common::InputError when a figure is not finite (values too large for double precision).
 TransferReport make_report(const TransferState& state, const std::vector<Stress6>& nodal_stress,
                            std::span<const mpm::io::ParticleRecord> particles);
 

@@ -32,7 +32,12 @@ const fs::path kBin = GEOFLOW_BIN_DIR;
 
 fs::path scratch(const std::string& name) { return test_support::fresh_scratch_folder("bad_input_regression", name); }
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+std::string quoted(const fs::path& p) {
+  std::string s = "'";  // not "'" + p.string(): GCC 12 flags that with a -Wrestrict false positive
+  s += p.string();
+  s += '\'';
+  return s;
+}
 
 /// fem2mpm on the reference case with `extra` options, writing into dir/deck.
 ProgramResult fem2mpm(const fs::path& dir, const std::string& extra, const fs::path& disp = kCase / "disp.out",
@@ -178,6 +183,40 @@ TEST(BadInputRegression, Fem2mpmGravityFromHugeBodyForcesIsNotWrittenAsNull) {
   const auto dir = scratch("body_force");
   const auto r = fem2mpm(dir, "", kCase / "disp.out", kCase / "stress.out", model_with(dir, "\"bodyForces\": [", "1e308"));
   expect_one_line_error(r, 2, "model.json: bodyForces: the gravity they give (body force / density) is inf, not finite; give --gravity", dir);
+}
+
+/// The case's recorder file `name` with value `column` (1-based, after the time) of its last row (the
+/// transfer row) replaced by `value`, written into dir; its path.
+fs::path recorder_with(const fs::path& dir, const std::string& name, int column, const std::string& value) {
+  std::string text = test_support::read_text(kCase / name);
+  std::size_t at = text.rfind('\n', text.size() - 2) + 1;  // the last row
+  for (int c = 0; c < column; ++c) at = text.find(' ', at) + 1;
+  text.replace(at, text.find_first_of(" \n", at) - at, value);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+// Found by the fuzz run of 2026-12-06 (seed s20261206, Release binaries, 6,089 cases per target): values
+// that pass every range check and overflow later were written as null into report.json or mpm.json.
+TEST(BadInputRegression, Fem2mpmHugeGravityIsAnErrorNotANullPotentialEnergy) {
+  const auto dir = scratch("huge_gravity");
+  expect_one_line_error(fem2mpm(dir, "--gravity 1e308"), 2,
+                        "the transferred state: its FEM potential energy (m g y) is not finite", dir);
+}
+
+TEST(BadInputRegression, Fem2mpmStressThatOverflowsInPascalNamesTheRecorderRow) {
+  // 1e308 kN/m2 is finite, 1e311 Pa is not.
+  const auto dir = scratch("huge_stress");
+  const auto r = fem2mpm(dir, "", kCase / "disp.out", recorder_with(dir, "stress.out", 25, "1e308"));
+  expect_one_line_error(r, 2, "stress.out:5: element 9, Gauss point 1: its stress is not finite in Pa", dir);
+}
+
+TEST(BadInputRegression, Fem2mpmLoadThatOverflowsInNewtonNamesTheRecorderValue) {
+  const auto dir = scratch("huge_load");
+  // A Node recorder read as nodal loads; the message counts the time column as value 1.
+  const auto loads = recorder_with(dir, "disp.out", 69, "-1e308");
+  const auto r = fem2mpm(dir, "--loads " + quoted(loads));
+  expect_one_line_error(r, 2, "disp.out:5: value 70 is '-1e308', not finite in SI units (times 1000)", dir);
 }
 
 TEST(BadInputRegression, Fem2mpmEscapesBinaryBytesInMessages) {
