@@ -5,6 +5,8 @@
 #include <iostream>
 #include <string>
 
+#include "common/number_text.hpp"
+
 namespace fem::materials {
 namespace {
 
@@ -69,6 +71,11 @@ DruckerPrager::DruckerPrager(int tag, const DruckerPragerParameters& params)
   if (!(params.bulk_modulus > 0.0)) throw common::InputError(where, "expected K > 0, got " + std::to_string(params.bulk_modulus));
   if (!(params.shear_modulus > 0.0)) throw common::InputError(where, "expected G > 0, got " + std::to_string(params.shear_modulus));
   if (!(params.density >= 0.0)) throw common::InputError(where, "expected density >= 0, got " + std::to_string(params.density));
+  // OpenSees' manual: 0 <= theta <= 1, the share of isotropic hardening in H (the rest kinematic); outside
+  // it the hardening moduli change sign and the return gives NaN (found by fuzzing: theta 1e308).
+  if (!(params.theta >= 0.0 && params.theta <= 1.0))
+    throw common::InputError(where, "expected 0 <= theta <= 1 (the isotropic share of the hardening), got " +
+                                        common::number_text(params.theta, 6));
   update_tension_strength();
   initialize();
 }

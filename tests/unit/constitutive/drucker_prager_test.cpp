@@ -7,6 +7,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <string>
 
 #include "common/input_error.hpp"
 #include "fem_tcl/materials/material_registry.hpp"
@@ -209,6 +210,26 @@ TEST(DruckerPrager, ParseDefaultsResponsesAndJson) {
   common::CommandArgs bad_k("nDMaterial DruckerPrager", "usage",
                             {"7", "-1", "32000", "7", "0.2", "0.2", "0", "0", "0", "0", "0", "1"});
   EXPECT_THROW(parse(bad_k), common::InputError);
+}
+
+TEST(DruckerPrager, ThetaOutsideZeroToOneIsAnInputError) {
+  // OpenSees' manual: 0 <= theta <= 1. Found by fuzzing: theta 1e308 gave NaN stresses on the first step
+  // (the kinematic modulus (1 - theta) H overflowed), written into the recorders by an analysis that "converged".
+  for (double theta : {-0.1, 1.5, 1e308}) {
+    DruckerPragerParameters p = column_parameters();
+    p.theta = theta;
+    try {
+      DruckerPrager(1, p);
+      ADD_FAILURE() << "theta " << theta << " accepted";
+    } catch (const common::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected 0 <= theta <= 1"), std::string::npos) << e.what();
+    }
+  }
+  for (double theta : {0.0, 0.5, 1.0}) {
+    DruckerPragerParameters p = column_parameters();
+    p.theta = theta;
+    EXPECT_NO_THROW(DruckerPrager(1, p));
+  }
 }
 
 }  // namespace
