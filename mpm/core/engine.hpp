@@ -8,7 +8,8 @@
 // per particle per step and stored. The sorted particles are cut into chunks of ~2048 at cell
 // boundaries (a function of the state only); threads take chunks dynamically (a preempted thread on a
 // shared machine does not hold the others back), each chunk scatters lock-free into its own band of
-// grid rows, and the bands are summed in chunk order: results are bit-identical for ANY thread count.
+// the grid (the rows and columns its stencils reach), and the bands are summed in chunk order: results
+// are bit-identical for ANY thread count.
 // Per-cell work (the cell remedies of stress_remedy.hpp) stays inside one chunk.
 #include <array>
 #include <cstddef>
