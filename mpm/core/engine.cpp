@@ -394,7 +394,7 @@ void Engine::cut_chunks() {
     offset += bands_[c].size();
   }
   if (pool_.size() < offset) pool_.resize(offset);  // grows rarely; no allocation in a steady state
-  // Chunks are sorted by row, so their first rows ascend.
+  // Chunks follow the rows: their bands' last rows ascend (an empty band has none).
   std::size_t first = 0;
   for (int j = bj0_; j < bj1_; ++j) {
     while (first < chunks_ && bands_[first].j1 <= j) ++first;
