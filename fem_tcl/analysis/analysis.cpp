@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace fem::analysis {
 
@@ -438,6 +439,12 @@ void Analysis::new_step(double dt) {
   const IntegratorConfig& ic = config_.integrator;
   const int nn = static_cast<int>(nodes_.size());
   step_start_time_ = domain_.committed_time();
+  // A finite dLambda or dt can still carry the time past the largest double (found by fuzzing:
+  // LoadControl -1e308, whose second step wrote a time of -inf into the recorders): the step fails.
+  const double step = ic.type == IntegratorType::LoadControl ? d_lambda_ : dt;
+  if (ic.type != IntegratorType::DisplacementControl && !std::isfinite(step_start_time_ + step))
+    throw common::NumericalError("the time (or load factor) " + common::number_text(step_start_time_, 6) + " + " +
+                                 common::number_text(step, 6) + " is not finite");
   switch (ic.type) {
     case IntegratorType::LoadControl: {
       if (ic.desired_iter > 0 && last_iterations_ > 0) {

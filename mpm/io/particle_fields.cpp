@@ -85,7 +85,11 @@ std::vector<ParticleField> particle_fields(std::span<const ParticleRecord> ps, c
   f.push_back(real_field("mass", K::Scalar, ps, [](const auto& p, int) { return p.mass; }));
   f.push_back(real_field("volume", K::Scalar, ps, [](const auto& p, int) { return p.volume; }));
   f.push_back(real_field("radius", K::Scalar, ps, [&](const auto& p, int) {
-    return 0.5 * std::sqrt(extent(p.nsize_x, grid.hx, p.volume) * extent(p.nsize_y, grid.hy, p.volume));
+    const double ex = extent(p.nsize_x, grid.hx, p.volume), ey = extent(p.nsize_y, grid.hy, p.volume);
+    // sqrt(ex) sqrt(ey) where ex ey overflows (found by fuzzing: a resumed bilinear-cell particle with
+    // nsize 1e68 x 1e247, which the physics ignores, gave a radius of inf).
+    const double area = ex * ey;
+    return 0.5 * (std::isfinite(area) ? std::sqrt(area) : std::sqrt(ex) * std::sqrt(ey));
   }));
   f.push_back(real_field("stress_xx", K::Scalar, ps, [](const auto& p, int) { return p.stress_xx; }));
   f.push_back(real_field("stress_yy", K::Scalar, ps, [](const auto& p, int) { return p.stress_yy; }));

@@ -223,6 +223,23 @@ if {[getTime] != 0.0} { error "time [getTime]" }
 )tcl"), "");
 }
 
+TEST(TclCommands, AStepWhoseTimeWouldNotBeFiniteFails) {
+  // Found by fuzzing: LoadControl -1e308 is a finite increment, but its second step's load factor is -inf,
+  // which the recorders wrote as the time. That step now fails like a diverged one: analyze returns < 0
+  // and the domain stays at the last committed step.
+  Interpreter interp;
+  ASSERT_EQ(error_of(interp, std::string(kTwoElementModel) + R"tcl(
+constraints Plain; numberer Plain; system BandGeneral
+test NormDispIncr 1e-12 10
+algorithm Newton
+integrator LoadControl -1e308
+analysis Static
+set ok [analyze 2]
+if {$ok >= 0} { error "analyze returned $ok" }
+if {[getTime] != -1e308} { error "time [getTime]" }
+)tcl"), "");
+}
+
 TEST(TclCommands, VariableTransientAnalyzeNeedsDtMinDtMaxAndJd) {
   Interpreter interp;
   ASSERT_EQ(error_of(interp, std::string(kOneQuadUnderRisingLoad) + "test NormDispIncr 1e-12 10\n"), "");

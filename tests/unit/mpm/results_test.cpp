@@ -186,6 +186,7 @@ TEST(ParticleFields, TensorsInParaViewOrderSizesAndStateVariables) {
   ps[1].stress_xx = 1, ps[1].stress_yy = 2, ps[1].stress_zz = 3, ps[1].tau_xy = 4;
   ps[1].gamma_xy = 0.2;
   ps[1].nsize_x = ps[1].nsize_y = 0.5;  // 4 x 4 particles per 1 m cell: 0.25 m each
+  ps[3].nsize_x = 1e68, ps[3].nsize_y = 1e247;  // finite, whose product overflows (a fuzzed resume file)
   ps[2].nstate_vars = 7;                // a Mohr-Coulomb particle: phi = 30 degrees, c = 5 kPa
   ps[2].svars[0] = std::numbers::pi / 6, ps[2].svars[2] = 5e3, ps[2].svars[6] = 0.01;
   const auto fields = mpm::io::particle_fields(ps, unit_grid());
@@ -201,6 +202,8 @@ TEST(ParticleFields, TensorsInParaViewOrderSizesAndStateVariables) {
   EXPECT_EQ(field("size").real[3], 0.25);
   EXPECT_EQ(field("size").real[0], std::sqrt(0.001));  // no nsize: the side of the particle's area
   EXPECT_EQ(field("radius").real[1], 0.125);
+  EXPECT_TRUE(std::isfinite(field("radius").real[3]));  // sqrt(ex) sqrt(ey), not sqrt(ex ey) = inf
+  EXPECT_CLOSE(field("radius").real[3], 0.5 * std::sqrt(0.5e68) * std::sqrt(0.5e247), 0.0, 1e-12);
   EXPECT_CLOSE(field("friction").real[2], 30.0, 1e-12, 0.0);
   EXPECT_EQ(field("friction").real[1], 0.0);  // no state variables: 0
   EXPECT_EQ(field("cohesion").real[2], 5e3);
