@@ -190,10 +190,13 @@ std::vector<double> RecorderFile::values(std::size_t index, double scale) const 
     if (!std::isfinite(v))
       throw common::InputError(where(index), "value " + std::to_string(column) + " is '" + std::string(begin, end) +
                                                  "' (the FEM state in this row is not finite: the analysis diverged?)");
-    if (!skip && !std::isfinite(v * scale))
-      throw common::InputError(where(index), "value " + std::to_string(column) + " is '" + std::string(begin, end) +
-                                                 "', not finite in SI units (times " + common::number_text(scale, 6) + ")");
-    if (!skip) out.push_back(v * scale);
+    if (!skip) {
+      const double scaled = v * scale;
+      if (!std::isfinite(scaled))
+        throw common::InputError(where(index), "value " + std::to_string(column) + " is '" + std::string(begin, end) +
+                                                   "', not finite in SI units (times " + common::number_text(scale, 6) + ")");
+      out.push_back(scaled);
+    }
     skip = false;
   });
   return out;

@@ -21,14 +21,18 @@ double norm2(const Stress6& s) {
 void check_finite(const TransferReport& r, double gravity) {
   const std::pair<const char*, double> figures[] = {
       {"FEM mass", r.fem.mass},
-      {"FEM momentum", r.fem.momentum.x() + r.fem.momentum.y()},
+      {"FEM momentum (x)", r.fem.momentum.x()},
+      {"FEM momentum (y)", r.fem.momentum.y()},
       {"FEM kinetic energy", r.fem.kinetic_energy},
       {"FEM potential energy (m g y)", r.fem.potential_energy},
       {"particles' mass", r.particles.mass},
-      {"particles' momentum", r.particles.momentum.x() + r.particles.momentum.y()},
+      {"particles' momentum (x)", r.particles.momentum.x()},
+      {"particles' momentum (y)", r.particles.momentum.y()},
       {"particles' kinetic energy", r.particles.kinetic_energy},
       {"particles' potential energy (m g y)", r.particles.potential_energy},
-      {"stress difference (sum of squared stresses)", r.stress_rms_relative + r.stress_max_relative + r.stress_max_abs}};
+      {"RMS relative stress difference", r.stress_rms_relative},
+      {"largest relative stress difference", r.stress_max_relative},
+      {"largest stress difference (Pa)", r.stress_max_abs}};
   for (const auto& [what, value] : figures)
     if (!std::isfinite(value))
       throw common::InputError("the transferred state",

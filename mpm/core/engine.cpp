@@ -571,9 +571,14 @@ void Engine::sum_bands_of_row(int j, int values, double* sums) const {
   }
 }
 
+/// The calling thread's scratch row for sum_bands_of_row.
+double* Engine::thread_row_sums() {
+  return &row_sums_[5 * static_cast<std::size_t>(nx_) * static_cast<std::size_t>(omp_get_thread_num())];
+}
+
 /// The grid fields of row j from the chunks' bands (sum_bands_of_row).
 void Engine::reduce_row(int j, GridFields summed) {
-  double* s = &row_sums_[5 * static_cast<std::size_t>(nx_) * static_cast<std::size_t>(omp_get_thread_num())];
+  double* s = thread_row_sums();
   sum_bands_of_row(j, 5, s);
   for (int i = bi0_; i < bi1_; ++i, s += 5) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
@@ -791,7 +796,7 @@ void Engine::scatter_remedy_values(std::size_t c) {
 /// Nodal remedy, 2/3: nodal value = sum w N value / sum w N (summed in chunk order).
 void Engine::nodal_remedy_row(int j) {
   const NodalProjection proj = nodal_projection(smoothing_);
-  double* s = &row_sums_[5 * static_cast<std::size_t>(nx_) * static_cast<std::size_t>(omp_get_thread_num())];
+  double* s = thread_row_sums();
   sum_bands_of_row(j, 4, s);
   for (int i = bi0_; i < bi1_; ++i, s += 5) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;

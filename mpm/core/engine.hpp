@@ -127,6 +127,7 @@ class Engine {
                         bool forces_from_next);
   void reduce_row(int j, GridFields summed);
   void sum_bands_of_row(int j, int values, double* sums) const;
+  double* thread_row_sums();
   void nodal_velocity_row(int j);
   void integrate_row(int j);
   template <class Shape, bool Affine>
