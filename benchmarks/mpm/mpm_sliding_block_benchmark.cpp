@@ -4,14 +4,15 @@
 // friction). Prints the block's mean displacement and velocity at t_end, their errors, and the step
 // of a numerical failure (runaway velocity) if one happens.
 //
-//   mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base [start]]]]]]]]]]]
-//   defaults:                    2      1e6 0.25 2   0.4  0.3  30             0.3 friction k0
+//   mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base [start [L [V*]]]]]]]]]]]]]
+//   defaults:                    2      1e6 0.25 2   0.4  0.3  30             0.3 friction k0    0  0
 // base "contact": the friction constraint alone (a one-sided frictional contact, fem2mpm's default base).
 // start "slope": the block starts with the self-weight shear of a layer on the slope as well ("k0":
-// the normal stresses only).
+// the normal stresses only). L, V*: the base's normal_lag (slip distance m, reference speed m/s;
+// mpm/core/lagged_friction.hpp); L = 0: instantaneous Coulomb friction (CB-Geo's).
 // `only` keeps the rows whose label ("ED2Q4/MUSL/FLIP") contains it ("" for all).
 //
-//   mpm_sliding_block_benchmark --flutter [E]
+//   mpm_sliding_block_benchmark --flutter [E [L V*]]
 // The friction limit of each transfer: uGIMP, MUSL, gravity rotated 45 degrees, 2 s; for nu = 0, 0.1,
 // 0.2, 0.3 and mu = 0.1 ... 0.8 whether d and v are within 3 % of Coulomb's rigid block, and the
 // largest mu up to which every mu is (the flutter threshold; mpm/README.md "Friction and flutter").
@@ -71,8 +72,9 @@ double coulomb(const SlidingBlockSpec& s) {
   return std::max(0.0, 9.81 * (std::sin(a) - s.mu * std::cos(a)));
 }
 
-int flutter_table(double E) {
-  std::printf("friction limit: uGIMP 0.25 m, MUSL, CFL 0.4, E %g Pa, gravity at 45 deg, 2 s; '+' = d and v within 3 %%\n", E);
+int flutter_table(double E, double lag_slip, double lag_speed) {
+  std::printf("friction limit: uGIMP 0.25 m, MUSL, CFL 0.4, E %g Pa, gravity at 45 deg, 2 s, normal lag L %g m V* %g m/s; "
+              "'+' = d and v within 3 %%\n", E, lag_slip, lag_speed);
   std::printf("%-9s %-4s  mu: 0.1 0.2 0.3 0.4 0.5 0.6 0.7 0.8   threshold\n", "transfer", "nu");
   for (const Transfer& tr : kTransfers) {
     if (tr.blend > 0.0) continue;
@@ -87,6 +89,8 @@ int flutter_table(double E) {
         spec.mu = 0.1 * k;
         spec.angle_deg = 45.0;
         spec.type = CellType::Gimp16;
+        spec.lag_slip_distance = lag_slip;
+        spec.lag_reference_velocity = lag_speed;
         const double a = coulomb(spec), t_end = 2.0;
         spec.cells_x = static_cast<int>(std::ceil((spec.x0 + spec.width + 0.5 * a * t_end * t_end + 2.0) / spec.h));
         std::string failure;
@@ -106,14 +110,15 @@ int flutter_table(double E) {
 
 int main(int argc, char** argv) {
   if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-    std::puts("usage: mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base [start]]]]]]]]]]]\n"
+    std::puts("usage: mpm_sliding_block_benchmark [t_end [E [h [ppd [cfl [mu [angle_deg [only [nu [base [start [L [V*]]]]]]]]]]]]]\n"
               "       base: friction (CB-Geo's bilateral base, default) or contact (one-sided frictional contact)\n"
               "       start: k0 (self-weight normal stresses, default) or slope (and the self-weight shear)\n"
-              "       mpm_sliding_block_benchmark --flutter [E]");
+              "       L, V*: the base's normal_lag (slip distance m, reference speed m/s; 0: none, the default)\n"
+              "       mpm_sliding_block_benchmark --flutter [E [L V*]]");
     return 0;
   }
-  if (argc > 1 && std::strcmp(argv[1], "--flutter") == 0) return flutter_table(argc > 2 ? std::atof(argv[2]) : 1e7);
   const auto arg = [&](int i, double fallback) { return argc > i ? std::atof(argv[i]) : fallback; };
+  if (argc > 1 && std::strcmp(argv[1], "--flutter") == 0) return flutter_table(arg(2, 1e7), arg(3, 0.0), arg(4, 0.0));
   const double t_end = arg(1, 2.0);
   SlidingBlockSpec spec;
   spec.E = arg(2, 1e6);
@@ -136,12 +141,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   spec.slope_start = start == "slope";
+  spec.lag_slip_distance = arg(12, 0.0);
+  spec.lag_reference_velocity = arg(13, 0.0);
   const double acc = coulomb(spec);
   const double d_exact = 0.5 * acc * t_end * t_end, v_exact = acc * t_end;
   spec.cells_x = static_cast<int>(std::ceil((spec.x0 + spec.width + d_exact + 2.0) / spec.h));
-  std::printf("block %g x %g m, E %g Pa, nu %g, h %g m, %d x %d particles per cell, CFL %g, mu %g, angle %g deg, base %s, start %s\n",
+  std::printf("block %g x %g m, E %g Pa, nu %g, h %g m, %d x %d particles per cell, CFL %g, mu %g, angle %g deg, base %s, start %s, "
+              "normal lag L %g m V* %g m/s\n",
               spec.width, spec.height, spec.E, spec.nu, spec.h, spec.ppd, spec.ppd, cfl, spec.mu, spec.angle_deg,
-              base.c_str(), start.c_str());
+              base.c_str(), start.c_str(), spec.lag_slip_distance, spec.lag_reference_velocity);
   std::printf("analytic at t = %g s: d = %.4f m, v = %.4f m/s\n", t_end, d_exact, v_exact);
   std::printf("%-6s %-5s %-10s %10s %8s %10s %8s %8s\n", "cells", "scheme", "transfer", "d (m)", "d err%",
               "v (m/s)", "v err%", "wall s");

@@ -148,8 +148,17 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
       nc.friction_dir = c.dir;
       nc.sign_n = c.sign_n > 0 ? 1.0 : -1.0;
       nc.mu = c.friction;
+      nc.lag = NormalLag{c.lag_slip_distance, c.lag_reference_velocity};
+    }
+    if (c.lag_slip_distance != 0.0 || c.lag_reference_velocity != 0.0) {
+      if (!(c.lag_slip_distance > 0.0) || !std::isfinite(c.lag_slip_distance))
+        throw common::InputError(where + ".normal_lag.slip_distance", "expected a finite slip distance > 0 (m)");
+      if (!(c.lag_reference_velocity >= 0.0) || !std::isfinite(c.lag_reference_velocity))
+        throw common::InputError(where + ".normal_lag.reference_velocity", "expected a finite speed >= 0 (m/s)");
+      lagged_friction_ = true;
     }
   }
+  normal_memory_.assign(constraints_.size(), NormalMemory{});
   set_up_wall_contacts();
 
   // Particles.
@@ -626,6 +635,7 @@ void Engine::integrate_row(int j) {
     const double m = mass_[n];
     if (!(m > mass_tolerance_)) {
       u[0] = u[1] = u[2] = u[3] = 0.0;
+      if (lagged_friction_ && constraint_of_[n] >= 0) normal_memory_[static_cast<std::size_t>(constraint_of_[n])].forget();
       continue;
     }
     const double vx = velocity_[2 * n], vy = velocity_[2 * n + 1];
@@ -641,7 +651,10 @@ void Engine::integrate_row(int j) {
     const double ax = small ? gx_ : fx / m, ay = small ? gy_ : fy / m;
     if (const std::int32_t c = constraint_of_[n]; c >= 0) {
       const Vec2 v_old(momentum_[2 * n] / m, momentum_[2 * n + 1] / m);
-      const ConstrainedVelocity r = constrained_velocity(v_old, Vec2(ax, ay), dt_, constraint_now(c));
+      const NodeConstraint now = constraint_now(c);
+      NormalMemory& memory = normal_memory_[static_cast<std::size_t>(c)];
+      if (now.friction_dir < 0) memory.forget();  // a contact the material does not touch
+      const ConstrainedVelocity r = constrained_velocity(v_old, Vec2(ax, ay), dt_, now, &memory, m);
       u[0] = r.velocity[0];
       u[1] = r.velocity[1];
       u[2] = r.rate[0];

@@ -221,6 +221,8 @@ class Engine {
   double mass_tolerance_ = 1.0e-15;  ///< nodes with no more mass are empty (kMassTolerance, scaled for tiny densities)
   std::vector<std::int32_t> constraint_of_;       ///< per node: index into constraints_, -1: unconstrained
   std::vector<NodeConstraint> constraints_;       ///< the constrained nodes' velocity and friction constraints
+  std::vector<NormalMemory> normal_memory_;       ///< per constraint: its lagged normal force (lagged_friction.hpp)
+  bool lagged_friction_ = false;                  ///< some friction constraint has a normal_lag
   /// A one-sided contact node (NodeConstraint::one_sided): its constraint index and the lattice index,
   /// along the wall's normal, of the wall face it belongs to (the innermost node of its run of contact
   /// nodes: nodes behind the face lie inside the rigid wall); wall_contact.cpp.

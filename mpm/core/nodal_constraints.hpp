@@ -3,8 +3,11 @@
 // form: the constraint changes the node's velocity by an impulse, and the same velocity change is
 // what FLIP hands to the particles, so PIC, FLIP and any blend see one constrained nodal field.
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+
+#include "mpm/core/lagged_friction.hpp"
 
 namespace mpm::core {
 
@@ -17,6 +20,7 @@ struct NodeConstraint {
   int friction_dir = -1;   ///< boundary normal axis (0 = x, 1 = y); -1: no friction
   double sign_n = -1.0;    ///< outward normal sign along friction_dir (+1 / -1)
   double mu = 0.0;         ///< Coulomb coefficient
+  NormalLag lag;           ///< the strength's lag behind the normal force (lagged_friction.hpp); default none
   bool constrained() const { return fixed != 0 || friction_dir >= 0; }
   /// A frictional wall with a free normal: it stops an approach and never pulls (a one-sided contact).
   bool one_sided() const { return friction_dir >= 0 && !((fixed >> friction_dir) & 1u); }
@@ -54,24 +58,35 @@ struct ConstrainedVelocity {
 /// - Prescribed components then take their value.
 /// A one-sided contact acts only where the material touches the wall (the engine's gap test,
 /// wall_contact.cpp); elsewhere the node is free.
+/// With a lag (c.lag, `memory` the node's NormalMemory, `mass` its mass) the Coulomb limit is mu N_s dt / m
+/// with N_s the lagged normal force (lagged_friction.hpp; N = m max(w_n, 0) / dt, slip speed |v*_t|), and
+/// on a wall that also holds the normal (bilateral) friction acts while N_s > 0 even where the wall pulls.
 /// The rate (v_new - v_old) / dt is what the particles get under FLIP: at a wall it removes the
 /// particles' normal velocity into the wall together with the nodal one (as Uintah's MPM does,
 /// SerialMPM::setGridBoundaryConditions: "recompute acceleration as the difference between the velocity
 /// interpolated to the grid (no bcs applied) and the new velocity_star"). CB-Geo hands FLIP a = 0 in a
 /// constrained direction and mu |a_n| from the force alone (include/node.tcc); mpm/README.md.
-inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a, double dt, const NodeConstraint& c) {
+inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a, double dt, const NodeConstraint& c,
+                                               NormalMemory* memory = nullptr, double mass = 0.0) {
   Vec2 v = v_old + dt * a;
   if (c.friction_dir >= 0) {
     const int dn = c.friction_dir;
     const double v_wall = wall_velocity(c);
     const double approach = c.sign_n * (v[dn] - v_wall);
-    if (approach > 0.0) {
-      const double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
-      Vec2 vt = v;
-      vt[dn] = 0.0;
-      const double slip = vt.norm();
+    Vec2 vt = v;
+    vt[dn] = 0.0;
+    const double slip = vt.norm();
+    double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
+    bool rubs = approach > 0.0;
+    if (memory && c.lag.active()) {
+      const double N = mass * std::max(approach, 0.0) / dt;
+      limit = c.mu * lag_normal_force(*memory, N, slip, dt, c.lag, mass) * dt / mass;
+      rubs = rubs || ((c.fixed >> dn) & 1u);
+    }
+    if (rubs) {
+      const double v_n = approach > 0.0 ? v_wall : v[dn];  // the approach is stopped
       v = slip <= limit ? Vec2::Zero() : Vec2((1.0 - limit / slip) * vt);
-      v[dn] = v_wall;
+      v[dn] = v_n;
     }
   }
   apply_prescribed(v, c);

@@ -47,6 +47,10 @@ struct FrictionConstraint {
   int dir = 1;
   int sign_n = -1;
   double friction = 0;
+  /// normal_lag (this code's key, not CB-Geo's): the friction strength follows the normal force over a
+  /// slip distance (m) plus a reference speed (m/s) (mpm/core/lagged_friction.hpp); 0: none
+  double lag_slip_distance = 0;
+  double lag_reference_velocity = 0;
 };
 
 enum class MaterialType { LinearElastic2D, MohrCoulomb2D };

@@ -280,6 +280,14 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         if (sign != 1 && sign != -1) bad("sign_n must be -1 or 1");
         if (!(mu >= 0)) bad("friction must be >= 0");
       };
+      // normal_lag (this code's, optional): the strength lags the normal force (mpm/core/lagged_friction.hpp)
+      double lag_slip = 0, lag_speed = 0;
+      if (c.has("normal_lag")) {
+        StrictObject lag = c.object("normal_lag");
+        lag_slip = lag.number_in("slip_distance", common::NumberRange::positive());
+        lag_speed = lag.number_in("reference_velocity", common::NumberRange::non_negative());
+        lag.finish();
+      }
       if (c.has("file")) {  // lines "node dir sign_n friction"
         const std::string f = c.string("file");
         const auto rows = read_columns(dir / f, f, 4);
@@ -290,6 +298,8 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
           check(rows[r][2], rows[r][3], [&](const std::string& w) { throw common::InputError(f, "entry " + std::to_string(r) + ": " + w); });
           fc.sign_n = static_cast<int>(rows[r][2]);
           fc.friction = rows[r][3];
+          fc.lag_slip_distance = lag_slip;
+          fc.lag_reference_velocity = lag_speed;
           deck.friction_constraints.push_back(fc);
         }
       } else {
@@ -300,6 +310,8 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         if (sign != 1 && sign != -1) c.fail("sign_n", "expected -1 or 1, got " + std::to_string(sign));
         fc.sign_n = static_cast<int>(sign);
         fc.friction = c.number_in("friction", kFrictionCoefficientRange);
+        fc.lag_slip_distance = lag_slip;
+        fc.lag_reference_velocity = lag_speed;
         deck.friction_constraints.push_back(std::move(fc));
       }
       c.finish();

@@ -130,6 +130,8 @@ struct SlidingBlockSpec {
   /// true: the block starts in the self-weight state of a layer on the slope, the shear that carries the
   /// down-slope load included (sigma_xy = rho g sin(a) (H - y)); false: the normal stresses only.
   bool slope_start = false;
+  /// The base's normal_lag (mpm/core/lagged_friction.hpp): slip distance (m; 0: none) and reference speed (m/s).
+  double lag_slip_distance = 0.0, lag_reference_velocity = 0.0;
 };
 inline Deck sliding_block(const SlidingBlockSpec& s) {
   constexpr double g = 9.81;
@@ -146,7 +148,7 @@ inline Deck sliding_block(const SlidingBlockSpec& s) {
   }
   const auto base = nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; });
   if (!s.one_sided) deck.velocity_constraints.push_back({base, 1, 0.0});
-  deck.friction_constraints.push_back({base, 1, -1, s.mu});
+  deck.friction_constraints.push_back({base, 1, -1, s.mu, s.lag_slip_distance, s.lag_reference_velocity});
   deck.analysis.gravity = {g * std::sin(a), -g * std::cos(a)};
   return deck;
 }

@@ -2,6 +2,8 @@
 // Bardenhagen, Brackbill & Sulsky 2000) and mpm/core/boundary_rules.hpp (Cundall's local damping).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "mpm/core/boundary_rules.hpp"
 #include "mpm/core/nodal_constraints.hpp"
 #include "support/tolerance.hpp"
@@ -87,6 +89,40 @@ TEST(NodalConstraints, StrainRateSeesNoApproachIntoAOneSidedWall) {
   c.fixed = 1u;  // and a prescribed x velocity
   c.fixed_velocity = Vec2(-0.1, 0.0);
   EXPECT_EQ(strain_rate_velocity(Vec2(0.3, 0.2), c)[0], -0.1);
+}
+
+// --- Friction with a lag (mpm/core/lagged_friction.hpp, the simplified Prakash-Clifton law) ---------
+
+TEST(LaggedFriction, StrengthCatchesUpWithTheNormalForceOverTheSlipDistance) {
+  // N steps from 1 to 2 at slip speed V (V* = 0): dN_s/ds = -(N_s - N) / L in slip s, so after a slip of
+  // L the strength has covered 1 - 1/e of the step (implicit Euler: 1 - (1 + V dt / L)^-(L / V dt)).
+  const mpm::core::NormalLag lag{0.1, 0.0};
+  mpm::core::NormalMemory memory;
+  EXPECT_EQ(mpm::core::lag_normal_force(memory, 1.0, 2.0, 1e-5, lag, 1.0), 1.0);  // first touch: N itself
+  const double V = 2.0, dt = 1e-5;
+  const int steps = static_cast<int>(lag.slip_distance / (V * dt));
+  double Ns = 0.0;
+  for (int k = 0; k < steps; ++k) Ns = mpm::core::lag_normal_force(memory, 2.0, V, dt, lag, 1.0);
+  EXPECT_CLOSE(Ns, 2.0 - std::exp(-1.0), 1e-3, 0);
+  // No slip and V* = 0: the strength holds whatever the normal force does.
+  EXPECT_EQ(mpm::core::lag_normal_force(memory, 5.0, 0.0, dt, lag, 1.0), Ns);
+  // Material leaving the node (its mass halves): the strength falls in proportion at once.
+  EXPECT_CLOSE(mpm::core::lag_normal_force(memory, 5.0, 0.0, dt, lag, 0.5), 0.5 * Ns, 1e-15, 0);
+}
+
+TEST(LaggedFriction, BilateralWallRubsWhileItsStrengthLasts) {
+  // A base that holds the normal, pulling this step (v*_y = +0.4: no approach). Instantaneous Coulomb: no
+  // friction; with a lag the strength of the earlier pressing still acts: mu N_s dt / m = 0.3 * 10 * 0.01.
+  NodeConstraint c = base(0.3);
+  EXPECT_CLOSE(constrained_velocity(Vec2(2.0, 0.5), Vec2(0.0, -10.0), 0.01, c).velocity[0], 2.0, 1e-15, 0);
+  c.lag = mpm::core::NormalLag{0.1, 1.0};
+  mpm::core::NormalMemory memory;
+  memory.force = 10.0;  // N_s (N) of a node of 1 kg
+  memory.mass = 1.0;
+  const auto r = constrained_velocity(Vec2(2.0, 0.5), Vec2(0.0, -10.0), 0.01, c, &memory, 1.0);
+  const double r_lag = 0.01 * (2.0 + 1.0) / 0.1;  // dt (|V| + V*) / L, N = 0 this step
+  EXPECT_CLOSE(r.velocity[0], 2.0 - 0.3 * (10.0 / (1.0 + r_lag)) * 0.01, 1e-12, 0);
+  EXPECT_EQ(r.velocity[1], 0.0);  // the prescribed normal
 }
 
 TEST(CundallDamping, ReducesForceAgainstVelocity) {

@@ -127,6 +127,26 @@ TEST(DeckReader, PressureSmoothingIsAcceptedWithAWarning) {
   EXPECT_MESSAGE_HAS(d.error(), "analysis.pressure_smoothing");
 }
 
+// normal_lag (this code's key, not CB-Geo's) on a friction constraint: the regularised friction of
+// mpm/core/lagged_friction.hpp; both numbers required, the slip distance > 0, the speed >= 0.
+TEST(DeckReader, FrictionConstraintNormalLag) {
+  SmallDeck d("normal_lag");
+  EXPECT_EQ(d.read().friction_constraints[0].lag_slip_distance, 0.0);  // absent: instantaneous Coulomb
+  auto& fc = d.deck["mesh"]["boundary_conditions"]["friction_constraints"][0];
+  fc["normal_lag"] = json::parse(R"({"slip_distance": 0.1, "reference_velocity": 1.0})");
+  const auto deck = d.read();
+  EXPECT_EQ(deck.friction_constraints[0].lag_slip_distance, 0.1);
+  EXPECT_EQ(deck.friction_constraints[0].lag_reference_velocity, 1.0);
+  fc["normal_lag"]["slip_distance"] = 0.0;
+  EXPECT_MESSAGE_HAS(d.error(), "normal_lag.slip_distance");
+  fc["normal_lag"] = json::parse(R"({"slip_distance": 0.1})");
+  EXPECT_MESSAGE_HAS(d.error(), "reference_velocity");
+  fc["normal_lag"] = json::parse(R"({"slip_distance": 0.1, "reference_velocity": -1})");
+  EXPECT_MESSAGE_HAS(d.error(), "normal_lag.reference_velocity");
+  fc["normal_lag"] = json::parse(R"({"slip_distance": 0.1, "reference_velocity": 1, "lag": 2})");
+  EXPECT_MESSAGE_HAS(d.error(), "normal_lag.lag");
+}
+
 TEST(DeckReader, MapsFileNodeIdsToLatticeIndices) {
   // The same mesh with the nodes listed in reverse order: file node n is lattice node 19 - n.
   SmallDeck d("reversed");
