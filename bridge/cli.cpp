@@ -47,6 +47,7 @@ struct CliOptions {
   std::optional<std::string> left_wall, right_wall, base;
   bool ignore_supports = false;
   std::vector<double> extent;
+  std::vector<double> base_lag;
   DeckOptions deck;
   /// --ground-motion FILE with -dt, -factor, -dir (OpenSees Path -dt -filePath -factor, UniformExcitation dir).
   std::string ground_motion;
@@ -199,6 +200,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   if (o.right_wall) deck.right = parse_wall(*o.right_wall, "--right-wall");
   if (o.base) deck.base = parse_base(*o.base);
   if (!o.extent.empty()) deck.extent = std::array<double, 4>{o.extent[0], o.extent[1], o.extent[2], o.extent[3]};
+  if (!o.base_lag.empty()) deck.base_lag = std::array<double, 2>{o.base_lag[0], o.base_lag[1]};
   if (const auto problem = mpm::io::run_name_problem(deck.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
   if (o.ground_motion.empty() && (o.ground_motion_dt || o.ground_motion_factor != 1.0 || o.ground_motion_dir != 1))
     throw common::InputError("--ground-motion", "the record file is missing (--ground-motion-dt, -factor and -dir describe it)");
@@ -416,6 +418,8 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--base", o.base, "grid's base: contact (one-sided frictional contact: stops the approach, Coulomb friction; the soil may leave it), friction (CB-Geo's: y-velocity 0 + Coulomb friction), roller or fixed (default: from the FEM supports: a roller line -> roller, a fixed line -> contact; else contact)")->group("MPM deck");
   app.add_flag("--ignore-supports", o.ignore_supports, "do not carry the FEM supports over: walls, base and grid from the options and the legacy defaults")->group("MPM deck");
   app.add_option("--base-friction", o.deck.base_friction, "base friction coefficient mu (CB-Geo friction_constraints)")->capture_default_str()->group("MPM deck");
+  app.add_option("--base-lag", o.base_lag, "L V*: the base friction's strength follows its normal force over a slip distance L (m) plus a reference speed V* (m/s), the simplified Prakash-Clifton law that regularises the flutter of elastic bodies on frictional walls (friction_constraints[].normal_lag; mpm/README.md \"Friction with a lag\"); default: none")
+      ->expected(2)->group("MPM deck");
   app.add_option("--base-y", o.deck.base_y, "height of the base, m: the base constraint acts on every node at or below it (default: the FEM base support line, else the grid's bottom edge; with GIMP and --extent give the FEM base and an extent one cell lower)")->group("MPM deck");
   app.add_option("--dt", o.deck.dt, "MPM time step, s (default: --cfl x cell size / P-wave speed)")->group("MPM deck");
   app.add_option("--cfl", o.deck.cfl, "Courant number for the default time step")->capture_default_str()->group("MPM deck");

@@ -176,6 +176,12 @@ void check_deck_options(const DeckOptions& options) {
     throw common::InputError("--scheme", "expected usf, usl or musl, got '" + options.scheme + "'");
   if (options.base == Base::Friction || options.base == Base::Contact)
     common::checked_number(options.base_friction, mpm::io::kFrictionCoefficientRange, "--base-friction");
+  if (options.base_lag) {
+    if (options.base != Base::Friction && options.base != Base::Contact)
+      throw common::InputError("--base-lag", "needs a frictional base (--base contact or friction)");
+    common::checked_number((*options.base_lag)[0], common::NumberRange::positive(), "--base-lag (slip distance, m)");
+    common::checked_number((*options.base_lag)[1], common::NumberRange::non_negative(), "--base-lag (reference speed, m/s)");
+  }
   common::checked_number(options.damping, mpm::io::kDampingFactorRange, "--damping");
   if (const auto problem = mpm::io::run_name_problem(options.uuid); !problem.empty()) throw common::InputError("--uuid", problem);
   if (options.cell_size && !(*options.cell_size > 0 && std::isfinite(*options.cell_size)))
@@ -312,6 +318,8 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
   if (options.base == Base::Fixed) vel.push_back({{"nset_id", 1}, {"dir", 0}, {"velocity", 0.0}});
   if (options.base == Base::Friction || options.base == Base::Contact) {
     fric.push_back({{"nset_id", 1}, {"dir", 1}, {"sign_n", -1}, {"friction", options.base_friction}});
+    if (options.base_lag)
+      fric.back()["normal_lag"] = {{"slip_distance", (*options.base_lag)[0]}, {"reference_velocity", (*options.base_lag)[1]}};
   }
 
   ordered_json deck;

@@ -40,6 +40,9 @@ struct DeckOptions {
   Wall left = Wall::Roller, right = Wall::Roller;
   Base base = Base::Contact;
   double base_friction = 0.4;
+  /// The base friction's normal_lag (slip distance m, reference speed m/s; mpm/core/lagged_friction.hpp);
+  /// unset: CB-Geo's instantaneous Coulomb friction.
+  std::optional<std::array<double, 2>> base_lag;
   /// m; the base node set (and its constraint) is every node at or below this height. Default: the grid's
   /// bottom edge. Give the FEM base (e.g. 0) with an extent one cell row lower, so that a GIMP particle
   /// that dips a hair below the base still lies inside the grid.

@@ -161,11 +161,12 @@ def transfer_keys(transfer, pic_blend):
 
 
 def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=None, pic_blend=PIC_BLEND,
-                        transfer=TRANSFER, base="friction", keep_times=None):
+                        transfer=TRANSFER, base="friction", keep_times=None, normal_lag=None):
     """MPM only: particles on the MPM grid (ppd x ppd per cell, at the centres of equal sub-cells), K0
     elastic geostatic stresses sigma_v = -rho g (H - y), sigma_h = sigma_z = nu / (1 - nu) sigma_v.
     base "friction": CB-Geo's base (y-velocity 0 and Coulomb friction); "contact": the friction constraint
-    alone, which mpm takes as a one-sided frictional contact (fem2mpm --base contact)."""
+    alone, which mpm takes as a one-sided frictional contact (fem2mpm --base contact). normal_lag: None, or
+    (slip distance m, reference speed m/s) of the base friction's lagged strength (mpm/core/lagged_friction.hpp)."""
     os.makedirs(d, exist_ok=True)
     h, n = scene.cell, scene.ppd
     nx, ny = int(round(scene.width / h)), int(round(scene.height / h))
@@ -210,7 +211,10 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
                  "boundary_conditions": {
                      "velocity_constraints": [{"nset_id": "left", "dir": 0, "velocity": 0.0}] +
                                              ([{"nset_id": 1, "dir": 1, "velocity": 0.0}] if base == "friction" else []),
-                     "friction_constraints": [{"nset_id": 1, "dir": 1, "sign_n": -1, "friction": BASE_MU}]}},
+                     "friction_constraints": [dict({"nset_id": 1, "dir": 1, "sign_n": -1, "friction": BASE_MU},
+                                                   **({} if normal_lag is None else {"normal_lag": {
+                                                       "slip_distance": normal_lag[0],
+                                                       "reference_velocity": normal_lag[1]}}))]}},
         "particles": [{"generator": {"type": "file", "location": "particles.txt", "io_type": "Ascii2D",
                                      "check_duplicates": False, "particle_type": "P2D", "material_id": 0,
                                      "pset_id": 0}}],
@@ -234,12 +238,12 @@ def write_mpm_only_deck(scene, d, smoothing="none", duration=None, out_every=Non
 
 
 def run_mpm_only(bins, scene, out, threads, name="mpm", smoothing="none", duration=None, out_every=None,
-                 pic_blend=PIC_BLEND, transfer=TRANSFER, base="friction", keep_times=None):
+                 pic_blend=PIC_BLEND, transfer=TRANSFER, base="friction", keep_times=None, normal_lag=None):
     """keep_times: the TOTAL times whose particle files are written (particle_output_steps); None: all."""
     d = os.path.join(out, name)
     if os.path.isdir(d):
         shutil.rmtree(d)
-    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer, base, keep_times)
+    write_mpm_only_deck(scene, d, smoothing, duration, out_every, pic_blend, transfer, base, keep_times, normal_lag)
     w = pipeline.run_mpm(bins, d, threads)
     with open(os.path.join(d, "wall.txt"), "w") as f:
         f.write("%.3f\n" % w)

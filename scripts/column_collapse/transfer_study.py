@@ -3,6 +3,7 @@
 
     scripts/column_collapse/transfer_study.py [--out DIR] [--jobs N] [--aspect 3,0.8] [--transfers flip,pic,blend,apic]
                                               [--halved apic] [--tau 7] [--smoothing none] [--base friction]
+                                              [--normal-lag L,V*]
 
 Each run: the paper's soil (study.py), GIMP cells of 1 m (and 0.5 m for --halved transfers), 4 x 4 particles
 per cell, MUSL, CFL 0.5, base friction tan(phi), analysis.stress_smoothing --smoothing, the base --base
@@ -30,16 +31,17 @@ COLUMNS = {3.0: (10.0, 30.0), 0.8: (50.0, 40.0)}
 REST_SPEED, REST_KE = 0.05, 1e-5
 
 
-def run_one(bins, out, a, key, cell, tau, smoothing, base):
+def run_one(bins, out, a, key, cell, tau, smoothing, base, normal_lag=None):
     width, height = COLUMNS[a]
     scene = study.Scene(width, height, cell, 4, out_every=0.1)
     transfer, blend = TRANSFERS[key]
     name = "a%g_%s_h%g" % (a, key, cell) + ("" if smoothing == "none" else "_" + smoothing) + \
-        ("" if base == "friction" else "_" + base)
+        ("" if base == "friction" else "_" + base) + ("" if normal_lag is None else "_lag%g" % normal_lag[0])
     t0 = time.time()
     try:
         run = study.run_mpm_only(bins, scene, out, 1, name, duration=tau * scene.tau_c, pic_blend=blend,
-                                 transfer=transfer, smoothing=smoothing, base=base)
+                                 transfer=transfer, smoothing=smoothing, base=base,
+                                 normal_lag=normal_lag)
     except RuntimeError as e:
         return {"name": name, "a": a, "key": key, "cell": cell, "failed": str(e).splitlines()[-1][:200]}
     s = study.read_series(run["results"])
@@ -83,6 +85,8 @@ def main(argv=None):
     ap.add_argument("--halved", default="apic", help="transfers also run with 0.5 m cells ('' for none)")
     ap.add_argument("--tau", type=float, default=7.0, help="end time in units of tau_c")
     ap.add_argument("--smoothing", default="none", help="analysis.stress_smoothing of every run (e.g. cell_strain)")
+    ap.add_argument("--normal-lag", default="", help="L,V*: the base friction's normal_lag (slip distance m, "
+                    "reference speed m/s; mpm/core/lagged_friction.hpp); '' for none")
     ap.add_argument("--base", default="friction", choices=("friction", "contact"),
                     help="friction: y-velocity 0 + Coulomb (CB-Geo); contact: one-sided frictional contact")
     ap.add_argument("--bin", default=os.path.join(study.REPO, "build", "bin"))
@@ -99,7 +103,9 @@ def main(argv=None):
             jobs.append((a, key, 0.5))
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(run_one, bins, args.out, a, key, cell, args.tau, args.smoothing, args.base) for a, key, cell in jobs]
+        lag = None if not args.normal_lag else tuple(float(v) for v in args.normal_lag.split(","))
+        futures = [pool.submit(run_one, bins, args.out, a, key, cell, args.tau, args.smoothing, args.base, lag)
+                   for a, key, cell in jobs]
         for f in concurrent.futures.as_completed(futures):
             r = f.result()
             results.append(r)

@@ -103,6 +103,25 @@ TEST(MpmDeck, DefaultBaseIsAOneSidedFrictionalContact) {
   EXPECT_EQ(bc["friction_constraints"][0]["friction"], 0.45);
 }
 
+// --base-lag L V*: the base friction's normal_lag (mpm/core/lagged_friction.hpp); none by default, an
+// input error on a base without friction or with a slip distance <= 0.
+TEST(MpmDeck, BaseLagWritesNormalLag) {
+  bridge::DeckOptions o;
+  EXPECT_FALSE(nlohmann::json::parse(bridge::build_deck(column_state(), {}, o).mpm_json)["mesh"]["boundary_conditions"]
+                   ["friction_constraints"][0]
+                       .contains("normal_lag"));
+  o.base_lag = std::array<double, 2>{0.1, 1.0};
+  const auto deck = nlohmann::json::parse(bridge::build_deck(column_state(), {}, o).mpm_json);
+  const auto& lag = deck["mesh"]["boundary_conditions"]["friction_constraints"][0]["normal_lag"];
+  EXPECT_EQ(lag["slip_distance"], 0.1);
+  EXPECT_EQ(lag["reference_velocity"], 1.0);
+  o.base_lag = std::array<double, 2>{0.0, 1.0};
+  EXPECT_THROW(bridge::build_deck(column_state(), {}, o), common::InputError);
+  o.base_lag = std::array<double, 2>{0.1, 1.0};
+  o.base = bridge::Base::Roller;
+  EXPECT_THROW(bridge::build_deck(column_state(), {}, o), common::InputError);
+}
+
 // --stress-smoothing: written as analysis.stress_smoothing (the checkerboard remedy of this project's mpm);
 // the default "none" writes no key, so a default deck keeps CB-Geo's schema.
 TEST(MpmDeck, StressSmoothingKey) {

@@ -248,7 +248,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(SlidingBlockLaggedFriction, ReleasedExactlyAtTheFrictionLimitFlipAndApicHold) {
   // mu = tan(a), the block in its self-weight state on the one-sided contact, nu = 0.3, uGIMP, 1 s: with
   // instantaneous Coulomb friction FLIP and APIC creep 0.07-0.26 m (the flutter; PIC 1-10 mm, an error of
-  // the time step). With the lag: measured 2.6-4.3 mm (USF, MUSL) and 14-20 mm (USL FLIP, 1.4 mm APIC).
+  // the time step). With the lag: measured FLIP 3.3-4.3 mm and APIC 1.6-2.4 mm (USF, MUSL), USL FLIP
+  // 20 mm and APIC 1.6 mm.
   for (auto scheme : {Scheme::USF, Scheme::USL, Scheme::MUSL})
     for (const Transfer tr : {kFlip, kApic}) {
       SCOPED_TRACE(testing::Message() << scheme_name(scheme) << " " << tr.name);
