@@ -51,8 +51,10 @@ inline double lag_normal_force(NormalMemory& memory, double normal_force, double
   if (memory.force < 0.0) {
     memory.force = normal_force;
   } else {
+    // As the weights 1 / (1 + r) and r / (1 + r): finite for any r, the instantaneous N when r overflows.
     const double r = dt * (std::abs(slip_speed) + lag.reference_velocity) / lag.slip_distance;
-    memory.force = (memory.force + r * normal_force) / (1.0 + r);
+    const double keep = 1.0 / (1.0 + r);
+    memory.force = keep * memory.force + (1.0 - keep) * normal_force;
   }
   return memory.force;
 }

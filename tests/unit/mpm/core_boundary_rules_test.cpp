@@ -108,6 +108,11 @@ TEST(LaggedFriction, StrengthCatchesUpWithTheNormalForceOverTheSlipDistance) {
   EXPECT_EQ(mpm::core::lag_normal_force(memory, 5.0, 0.0, dt, lag, 1.0), Ns);
   // Material leaving the node (its mass halves): the strength falls in proportion at once.
   EXPECT_CLOSE(mpm::core::lag_normal_force(memory, 5.0, 0.0, dt, lag, 0.5), 0.5 * Ns, 1e-15, 0);
+  // A lag so short that r = dt (|V| + V*) / L overflows: the instantaneous N, finite (not inf / inf).
+  const mpm::core::NormalLag instant{1e-300, 1e300};
+  mpm::core::NormalMemory fresh;
+  mpm::core::lag_normal_force(fresh, 1.0, 0.0, 1.0, instant, 1.0);
+  EXPECT_EQ(mpm::core::lag_normal_force(fresh, 3.0, 1e308, 1.0, instant, 1.0), 3.0);
 }
 
 TEST(LaggedFriction, BilateralWallRubsWhileItsStrengthLasts) {
