@@ -366,10 +366,21 @@ def add_loads(deck: dict):
     loads["particle_surface_traction"] = [{"pset_id": -1, "dir": 0, "traction": 10.0, "math_function_id": 0}]
 
 
+def add_normal_lag(deck: dict):
+    """This mpm's lagged friction strength (friction_constraints[].normal_lag) on every friction constraint, so
+    that mutations reach its reader and the engine's lagged friction."""
+    bc = deck.get("mesh", {}).get("boundary_conditions", {})
+    for c in bc.get("friction_constraints", []):
+        if isinstance(c, dict):
+            c["normal_lag"] = {"slip_distance": 0.1, "reference_velocity": 1.0}
+
+
 def prepare_deck(folder: Path, rng, mutate_json: bool):
     deck = json.loads((folder / "mpm.json").read_text())
     if rng.random() < 0.3:
         add_loads(deck)
+    if rng.random() < 0.3:
+        add_normal_lag(deck)
     limit_steps(deck)
     text = json.dumps(deck, indent=1)
     if mutate_json:
