@@ -611,6 +611,10 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": mass and volume must be > 0");
     }
     read_resume_affine(file, rshown, deck);
+    if (std::any_of(deck.friction_constraints.begin(), deck.friction_constraints.end(),
+                    [](const FrictionConstraint& c) { return c.lag_slip_distance > 0; }))
+      deck.warnings.push_back(shown + ": friction_constraints[].normal_lag: the lagged strengths are not in " + rshown +
+                              ": they restart from the instantaneous normal forces (not bit for bit the run that wrote it)");
     sort_by_id(deck);
     for (std::size_t k = 1; k < deck.particles.size(); ++k)
       if (deck.particles[k].id == deck.particles[k - 1].id)

@@ -236,6 +236,24 @@ TEST(DeckReader, ResumeReadsTheHdf5StateAndStartsAfterItsStep) {
   EXPECT_EQ(deck.output.uuid, "bar_resume");
 }
 
+// A resumed deck whose friction has a normal_lag: the lagged strengths are not in the particle file (they
+// restart from the instantaneous normal forces), and the reader says so.
+TEST(DeckReader, ResumeWithALaggedFrictionWarnsThatItsMemoryRestarts) {
+  const auto dir = test_support::fresh_scratch_folder("geoflow_deck_reader", "resume_lag");
+  std::filesystem::copy(kCbgeo / "resume_from_h5", dir, std::filesystem::copy_options::recursive);
+  auto deck_json = json::parse(std::ifstream(dir / "mpm.json"));
+  EXPECT_TRUE(mpm::io::read_deck(dir, "mpm.json").warnings.empty());
+  deck_json["mesh"]["boundary_conditions"]["friction_constraints"] = json::parse(
+      R"([{"nset_id": -1, "dir": 1, "sign_n": -1, "friction": 0.3,
+           "normal_lag": {"slip_distance": 0.1, "reference_velocity": 1.0}}])");
+  std::ofstream(dir / "mpm.json") << deck_json.dump(1);
+  const auto warnings = mpm::io::read_deck(dir, "mpm.json").warnings;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_MESSAGE_HAS(warnings[0], "normal_lag");
+  EXPECT_MESSAGE_HAS(warnings[0], "restart from the instantaneous normal forces");
+  std::filesystem::remove_all(dir);
+}
+
 // ---- every malformed input: one InputError naming the file / key -------------------------------
 
 TEST(DeckReaderErrors, MissingInputFile) {
