@@ -73,20 +73,21 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
     const int dn = c.friction_dir;
     const double v_wall = wall_velocity(c);
     const double approach = c.sign_n * (v[dn] - v_wall);
-    Vec2 vt = v;
-    vt[dn] = 0.0;
-    const double slip = vt.norm();
-    double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
-    bool rubs = approach > 0.0;
-    if (memory && c.lag.active()) {
-      const double N = mass * std::max(approach, 0.0) / dt;
-      limit = c.mu * lag_normal_force(*memory, N, slip, dt, c.lag, mass) * dt / mass;
-      rubs = rubs || ((c.fixed >> dn) & 1u);
-    }
-    if (rubs) {
-      const double v_n = approach > 0.0 ? v_wall : v[dn];  // the approach is stopped
-      v = slip <= limit ? Vec2::Zero() : Vec2((1.0 - limit / slip) * vt);
-      v[dn] = v_n;
+    const bool lagged = memory && c.lag.active();
+    if (approach > 0.0 || lagged) {  // else a node leaving a wall without a lag: free
+      Vec2 vt = v;
+      vt[dn] = 0.0;
+      const double slip = vt.norm();
+      double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
+      if (lagged) {
+        const double N = mass * std::max(approach, 0.0) / dt;
+        limit = c.mu * lag_normal_force(*memory, N, slip, dt, c.lag, mass) * dt / mass;
+      }
+      if (approach > 0.0 || (lagged && ((c.fixed >> dn) & 1u))) {
+        const double v_n = approach > 0.0 ? v_wall : v[dn];  // the approach is stopped
+        v = slip <= limit ? Vec2::Zero() : Vec2((1.0 - limit / slip) * vt);
+        v[dn] = v_n;
+      }
     }
   }
   apply_prescribed(v, c);
