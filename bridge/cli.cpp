@@ -280,12 +280,12 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   std::thread h5_writer([&] {
     try {
       const auto start = Clock::now();
-      if (apic)
-        mpm::io::write_particle_table(h5_path, particles, [&](std::int64_t file_id) {
-          mpm::io::write_affine_dataset(file_id, affine, h5_path.string());
-        });
-      else
-        mpm::io::write_particle_table(h5_path, particles);
+      // Beside /table: the APIC matrices, and for a lagged base an empty friction memory (every base node
+      // starts from its instantaneous normal force, which is what the MPM run should do at the transfer).
+      mpm::io::write_particle_table(h5_path, particles, [&](std::int64_t file_id) {
+        if (apic) mpm::io::write_affine_dataset(file_id, affine, h5_path.string());
+        if (deck.base_lag) mpm::io::write_friction_memory_dataset(file_id, {}, h5_path.string());
+      });
       h5_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     } catch (...) {
       h5_error = std::current_exception();

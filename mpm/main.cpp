@@ -57,7 +57,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
       if (step % every == 0) {
         const auto state = sim.snapshot();
         results.write_output(step, sim.time(), sim.dt(), state,
-                             deck.output.writes_particles(step) ? sim.affine_snapshot() : std::vector<std::array<double, 4>>{});
+                             deck.output.writes_particles(step) ? sim.file_extras() : mpm::io::ParticleFileExtras{});
         say(energy.check(sim.time(), state));
       }
       if (!removal_said && sim.particle_count() < particles_at_start) {
@@ -72,7 +72,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
     const long long last = sim.step_index() - 1;
     std::string saved = "no step completed (only the initial outputs are written)";
     if (last >= deck.first_step) saved = "last good state (step " + std::to_string(last) + ") written to " +
-                                         results.write_state(last, sim.time(), sim.snapshot(), sim.affine_snapshot()).string();
+                                         results.write_state(last, sim.time(), sim.snapshot(), sim.file_extras()).string();
     std::fprintf(stderr, "mpm: %s; %s\n", common::printable(e.what()).c_str(), saved.c_str());
     return 3;
   }

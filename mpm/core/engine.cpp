@@ -159,6 +159,7 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
     }
   }
   normal_memory_.assign(constraints_.size(), NormalMemory{});
+  restore_friction_memory(deck.friction_memory);
   set_up_wall_contacts();
 
   // Particles.
@@ -934,6 +935,29 @@ std::vector<std::array<double, 4>> Engine::affine_snapshot() const {
   std::vector<std::array<double, 4>> out(by_id.size());
   for (std::size_t k = 0; k < by_id.size(); ++k) std::copy_n(&cur_.affine[4 * by_id[k]], 4, out[k].data());
   return out;
+}
+
+std::optional<std::vector<io::FrictionMemoryRecord>> Engine::friction_memory_snapshot() const {
+  if (!lagged_friction_) return std::nullopt;
+  std::vector<io::FrictionMemoryRecord> out;
+  for (std::size_t n = 0; n < nodes_; ++n)
+    if (const std::int32_t c = constraint_of_[n]; c >= 0)
+      if (const NormalMemory& m = normal_memory_[static_cast<std::size_t>(c)]; m.force >= 0.0)
+        out.push_back({static_cast<std::int64_t>(n), m.force, m.mass});
+  return out;
+}
+
+void Engine::restore_friction_memory(const std::vector<io::FrictionMemoryRecord>& memory) {
+  for (std::size_t k = 0; k < memory.size(); ++k) {
+    const io::FrictionMemoryRecord& r = memory[k];
+    const std::string where = "friction_memory[" + std::to_string(k) + "]";
+    if (r.node < 0 || static_cast<std::size_t>(r.node) >= nodes_ || constraint_of_[static_cast<std::size_t>(r.node)] < 0 ||
+        !constraints_[static_cast<std::size_t>(constraint_of_[static_cast<std::size_t>(r.node)])].lag.active())
+      throw common::InputError(where, "node " + std::to_string(r.node) + " has no friction constraint with a normal_lag");
+    if (!(r.force >= 0.0 && std::isfinite(r.force)) || !(r.mass > 0.0 && std::isfinite(r.mass)))
+      throw common::InputError(where, "expected a finite force >= 0 and mass > 0");
+    normal_memory_[static_cast<std::size_t>(constraint_of_[static_cast<std::size_t>(r.node)])] = NormalMemory{r.force, r.mass};
+  }
 }
 
 std::vector<io::ParticleRecord> Engine::snapshot() const {

@@ -89,6 +89,8 @@ class Engine {
   std::vector<io::ParticleRecord> snapshot() const;
   /// The APIC matrices in snapshot() order (by id); empty unless the transfer is APIC.
   std::vector<std::array<double, 4>> affine_snapshot() const;
+  /// The nodes' lagged friction strengths (nodes holding one, by node); nullopt without a normal_lag.
+  std::optional<std::vector<io::FrictionMemoryRecord>> friction_memory_snapshot() const;
 
   static constexpr std::int64_t kRemoved = -1;
 
@@ -161,6 +163,8 @@ class Engine {
   void cut_chunks();      ///< the active node box and the chunks of order_
   void throw_first_error() const;
   void set_up_wall_contacts();  ///< contact_nodes_ from the constraints (wall_contact.cpp)
+  /// normal_memory_ from a resumed deck's friction_memory; InputError for a node without a lagged friction.
+  void restore_friction_memory(const std::vector<io::FrictionMemoryRecord>& memory);
   void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
   NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id

@@ -17,8 +17,8 @@
 // Opt-in per friction constraint (friction_constraints[].normal_lag); without it the friction is
 // CB-Geo's instantaneous Coulomb rule. The memory N_s is held per constrained node (the wall is fixed in
 // space): a node that material first touches starts from its instantaneous N, and one it leaves (no mass,
-// or a one-sided contact it no longer touches) forgets. The memory is not in the particle files: a
-// resumed run starts it afresh from the instantaneous normal forces (the deck reader warns).
+// or a one-sided contact it no longer touches) forgets. The memory is written beside the particle table
+// (io::kFrictionMemoryDataset), so that a resumed run continues bit for bit.
 #include <cmath>
 
 namespace mpm::core {

@@ -18,5 +18,8 @@ double Simulation::courant_number() const { return engine_->courant_number(); }
 std::size_t Simulation::particle_count() const { return engine_->particle_count(); }
 std::vector<io::ParticleRecord> Simulation::snapshot() const { return engine_->snapshot(); }
 std::vector<std::array<double, 4>> Simulation::affine_snapshot() const { return engine_->affine_snapshot(); }
+std::optional<std::vector<io::FrictionMemoryRecord>> Simulation::friction_memory_snapshot() const {
+  return engine_->friction_memory_snapshot();
+}
 
 }  // namespace mpm::core

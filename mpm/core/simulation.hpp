@@ -81,6 +81,11 @@ class Simulation {
   /// The APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s) in snapshot() order; empty unless the
   /// transfer is APIC. Written beside the particle table so that a resumed run continues bit for bit.
   std::vector<std::array<double, 4>> affine_snapshot() const;
+  /// The lagged friction strengths (lagged_friction.hpp) by node; nullopt unless a friction constraint
+  /// has a normal_lag. Written beside the particle table for the same reason.
+  std::optional<std::vector<io::FrictionMemoryRecord>> friction_memory_snapshot() const;
+  /// Both of the above, as a particle file carries them.
+  io::ParticleFileExtras file_extras() const { return {affine_snapshot(), friction_memory_snapshot()}; }
 
  private:
   std::unique_ptr<Engine> engine_;

@@ -150,6 +150,9 @@ struct Deck {
   /// APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s), one per particle in `particles` order; empty:
   /// all zero (a fresh start, or a resume file without the dataset).
   std::vector<std::array<double, 4>> particle_affine;
+  /// The lagged friction strengths of a resumed run (its file's kFrictionMemoryDataset): the nodes listed
+  /// start from them, every other node from its instantaneous normal force; empty: all of them.
+  std::vector<FrictionMemoryRecord> friction_memory;
   Analysis analysis;
   std::optional<BaseAcceleration> base_acceleration;
   std::vector<NodalForce> nodal_forces;

@@ -19,6 +19,7 @@
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
 #include "mpm/io/output_keys.hpp"
+#include "mpm/io/resume_extras.hpp"
 #include "mpm/io/transfer_keys.hpp"
 
 namespace mpm::io {
@@ -610,11 +611,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
       if (!(p.mass > 0) || !(p.volume > 0))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": mass and volume must be > 0");
     }
-    read_resume_affine(file, rshown, deck);
-    if (std::any_of(deck.friction_constraints.begin(), deck.friction_constraints.end(),
-                    [](const FrictionConstraint& c) { return c.lag_slip_distance > 0; }))
-      deck.warnings.push_back(shown + ": friction_constraints[].normal_lag: the lagged strengths are not in " + rshown +
-                              ": they restart from the instantaneous normal forces (not bit for bit the run that wrote it)");
+    read_resume_extras(file, shown, rshown, deck);
     sort_by_id(deck);
     for (std::size_t k = 1; k < deck.particles.size(); ++k)
       if (deck.particles[k].id == deck.particles[k - 1].id)

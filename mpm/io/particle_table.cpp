@@ -209,38 +209,91 @@ std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& fil
   return records;
 }
 
-void write_affine_dataset(std::int64_t file_id, std::span<const std::array<double, 4>> affine, const std::string& shown) {
+namespace {
+/// Writes `rows` x `columns` doubles as the 2-D float64 dataset `name` of the open file `file_id`.
+void write_rows(std::int64_t file_id, const char* name, const double* data, std::size_t rows, std::size_t columns,
+                const std::string& shown) {
   QuietHdf5 quiet;
-  const hsize_t dims[2] = {static_cast<hsize_t>(affine.size()), 4};
+  const hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(columns)};
   Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
-  Handle dset(H5Dcreate2(static_cast<hid_t>(file_id), kAffineDataset, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
-                         H5P_DEFAULT, H5P_DEFAULT),
+  Handle dset(H5Dcreate2(static_cast<hid_t>(file_id), name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                         H5P_DEFAULT),
               H5Dclose);
-  if (!dset.valid() || (!affine.empty() && H5Dwrite(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                                    affine.data()) < 0))
-    throw std::runtime_error(shown + ": writing the /" + std::string(kAffineDataset) + " dataset failed");
+  if (!dset.valid() || (rows > 0 && H5Dwrite(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0))
+    throw std::runtime_error(shown + ": writing the /" + std::string(name) + " dataset failed");
 }
 
-std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
-                                                                      std::size_t rows) {
+/// Reads the 2-D float dataset `name` of `file` as rows of `Columns` doubles: std::nullopt when the file
+/// has none; common::InputError naming the file when it has another shape (`rows`: the rows expected, or
+/// nullopt for any number) or cannot be read. `shape`: the expected shape in words, for the message.
+template <std::size_t Columns>
+std::optional<std::vector<std::array<double, Columns>>> read_rows(const std::filesystem::path& file, const char* name,
+                                                                  std::optional<std::size_t> rows, const std::string& shape) {
   QuietHdf5 quiet;
   Handle h5(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!h5.valid()) throw common::InputError(file.string(), "not a readable HDF5 file");
-  if (H5Lexists(h5.get(), kAffineDataset, H5P_DEFAULT) <= 0) return std::nullopt;
-  const std::string what = "dataset \"/" + std::string(kAffineDataset) + "\"";
-  Handle dset(H5Dopen2(h5.get(), kAffineDataset, H5P_DEFAULT), H5Dclose);
+  if (H5Lexists(h5.get(), name, H5P_DEFAULT) <= 0) return std::nullopt;
+  const std::string what = "dataset \"/" + std::string(name) + "\"";
+  Handle dset(H5Dopen2(h5.get(), name, H5P_DEFAULT), H5Dclose);
   if (!dset.valid()) throw common::InputError(file.string(), what + " cannot be opened");
   Handle ftype(H5Dget_type(dset.get()), H5Tclose);
   Handle space(H5Dget_space(dset.get()), H5Sclose);
   hsize_t dims[2] = {0, 0};
   if (H5Tget_class(ftype.get()) != H5T_FLOAT || H5Sget_simple_extent_ndims(space.get()) != 2 ||
-      H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 || dims[0] != rows || dims[1] != 4)
-    throw common::InputError(file.string(), what + " must be " + std::to_string(rows) +
-                                                " x 4 floats (one row per particle of /table)");
-  std::vector<std::array<double, 4>> affine(rows);
-  if (rows > 0 && H5Dread(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, affine.data()) < 0)
+      H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 || (rows && dims[0] != *rows) || dims[1] != Columns)
+    throw common::InputError(file.string(), what + " must be " + shape);
+  // As for "/table": the declared size is checked against the file before allocating.
+  std::error_code ec;
+  const auto file_bytes = std::filesystem::file_size(file, ec);
+  Handle plist(H5Dget_create_plist(dset.get()), H5Pclose);
+  const bool filtered = plist.valid() && H5Pget_nfilters(plist.get()) > 0;
+  if (!filtered && !ec && static_cast<double>(dims[0]) * Columns * sizeof(double) > static_cast<double>(file_bytes))
+    throw common::InputError(file.string(), what + " declares " + std::to_string(dims[0]) + " rows but the file has only " +
+                                                std::to_string(file_bytes) + " bytes (truncated or corrupt file)");
+  if (const auto problem = common::size_problem(static_cast<double>(dims[0]), Columns * sizeof(double), "rows");
+      !problem.empty())
+    throw common::InputError(file.string(), what + ": " + problem);
+  std::vector<std::array<double, Columns>> out(static_cast<std::size_t>(dims[0]));
+  if (!out.empty() && H5Dread(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
     throw common::InputError(file.string(), "reading " + what + " failed (truncated or corrupt file?)");
-  return affine;
+  return out;
+}
+}  // namespace
+
+void write_affine_dataset(std::int64_t file_id, std::span<const std::array<double, 4>> affine, const std::string& shown) {
+  write_rows(file_id, kAffineDataset, affine.empty() ? nullptr : affine.front().data(), affine.size(), 4, shown);
+}
+
+std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
+                                                                      std::size_t rows) {
+  return read_rows<4>(file, kAffineDataset, rows,
+                      std::to_string(rows) + " x 4 floats (one row per particle of /table)");
+}
+
+void write_friction_memory_dataset(std::int64_t file_id, std::span<const FrictionMemoryRecord> memory,
+                                   const std::string& shown) {
+  std::vector<double> rows;
+  rows.reserve(3 * memory.size());
+  for (const FrictionMemoryRecord& r : memory) rows.insert(rows.end(), {static_cast<double>(r.node), r.force, r.mass});
+  write_rows(file_id, kFrictionMemoryDataset, rows.data(), memory.size(), 3, shown);
+}
+
+std::optional<std::vector<FrictionMemoryRecord>> read_friction_memory_dataset(const std::filesystem::path& file) {
+  const auto rows = read_rows<3>(file, kFrictionMemoryDataset, std::nullopt, "n x 3 floats (node, force N_s, node mass)");
+  if (!rows) return std::nullopt;
+  std::vector<FrictionMemoryRecord> memory;
+  memory.reserve(rows->size());
+  for (std::size_t k = 0; k < rows->size(); ++k) {
+    const auto& [node, force, mass] = (*rows)[k];
+    // A node index is stored as a float64: exact below 2^53, so an integral value in range is the node.
+    if (!(node >= 0 && node < 9.0e15 && node == std::floor(node)) || !(force >= 0 && std::isfinite(force)) ||
+        !(mass > 0 && std::isfinite(mass)))
+      throw common::InputError(file.string(), "dataset \"/" + std::string(kFrictionMemoryDataset) + "\" row " +
+                                                  std::to_string(k) + ": expected a node index >= 0, a force >= 0 "
+                                                  "and a mass > 0 (finite)");
+    memory.push_back({static_cast<std::int64_t>(node), force, mass});
+  }
+  return memory;
 }
 
 std::string particle_file_name(long long step, long long nsteps) {

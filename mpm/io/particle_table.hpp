@@ -71,6 +71,38 @@ void write_affine_dataset(std::int64_t file_id, std::span<const std::array<doubl
 std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
                                                                       std::size_t rows);
 
+/// The lagged friction strengths of a run with friction_constraints[].normal_lag (mpm/core/lagged_friction.hpp),
+/// so that a resumed run continues bit for bit (this project's extension, beside "/table"): a 2-D float64
+/// dataset of n x 3 columns, node index, lagged normal force N_s (N per m) and the node's mass when N_s was
+/// last updated (kg per m), one row per frictional node that holds a memory.
+inline constexpr const char* kFrictionMemoryDataset = "friction_memory";
+
+/// One row of kFrictionMemoryDataset.
+struct FrictionMemoryRecord {
+  std::int64_t node = 0;
+  double force = 0;  ///< N_s
+  double mass = 0;
+  bool operator==(const FrictionMemoryRecord&) const = default;
+};
+
+/// Writes kFrictionMemoryDataset into the open HDF5 file `file_id`. Throws std::runtime_error naming
+/// `shown` on failure.
+void write_friction_memory_dataset(std::int64_t file_id, std::span<const FrictionMemoryRecord> memory,
+                                   const std::string& shown);
+
+/// Reads kFrictionMemoryDataset from `file`: std::nullopt when the file has none; common::InputError
+/// naming the file and row when it is not n x 3 floats, a node index is not a whole number >= 0, a force
+/// is negative or a mass not positive (or either not finite).
+std::optional<std::vector<FrictionMemoryRecord>> read_friction_memory_dataset(const std::filesystem::path& file);
+
+/// What a particle file carries beside CB-Geo's "/table" for a bit-for-bit resume: the APIC matrices
+/// (empty unless the transfer is APIC: none written) and the lagged friction strengths (none without a
+/// normal_lag; with one, written even when no node holds a memory).
+struct ParticleFileExtras {
+  std::vector<std::array<double, 4>> affine;
+  std::optional<std::vector<FrictionMemoryRecord>> friction_memory;
+};
+
 /// CB-Geo's output name for `step` of a run of `nsteps` steps: "particles" + step zero-padded to
 /// int(log10(nsteps)) + 1 digits + ".h5" (e.g. step 250 of 1001 -> "particles0250.h5").
 std::string particle_file_name(long long step, long long nsteps);

@@ -261,19 +261,20 @@ void ResultsWriter::write_start(double time, std::span<const ParticleRecord> par
 }
 
 void ResultsWriter::write_particles(long long step, double time, std::span<const ParticleRecord> particles,
-                                    std::span<const std::array<double, 4>> affine) {
+                                    const ParticleFileExtras& extras) {
   const fs::path file = particle_file(step);
   write_particle_table(file, particles, [&](std::int64_t id) {
     write_xdmf_datasets(static_cast<hid_t>(id), particles, deck_.grid, file.string());
-    if (!affine.empty()) write_affine_dataset(id, affine, file.string());
+    if (!extras.affine.empty()) write_affine_dataset(id, extras.affine, file.string());
+    if (extras.friction_memory) write_friction_memory_dataset(id, *extras.friction_memory, file.string());
   });
   add_frame({step, time, particles.size(), file.filename().string()}, particles);
 }
 
 void ResultsWriter::write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
-                                 std::span<const std::array<double, 4>> affine) {
+                                 const ParticleFileExtras& extras) {
   prepare();
-  if (deck_.output.writes_particles(step)) write_particles(step, time, particles, affine);
+  if (deck_.output.writes_particles(step)) write_particles(step, time, particles, extras);
   add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
   write_series();
 }
@@ -285,9 +286,9 @@ void ResultsWriter::write_series_row(long long step, double time, double dt, std
 }
 
 fs::path ResultsWriter::write_state(long long step, double time, std::span<const ParticleRecord> particles,
-                                   std::span<const std::array<double, 4>> affine) {
+                                   const ParticleFileExtras& extras) {
   prepare();
-  write_particles(step, time, particles, affine);
+  write_particles(step, time, particles, extras);
   return particle_file(step);
 }
 

@@ -72,21 +72,21 @@ class ResultsWriter {
   /// whose folder already holds earlier frames keeps those instead.
   void write_start(double time, std::span<const ParticleRecord> particles);
   /// An output step: particles<step>.h5 (unless Output::particle_output_steps leaves it out), then
-  /// particles.xdmf and series.csv rewritten. `affine` (APIC
-  /// runs: one matrix per record, same order) goes to the file's kAffineDataset; empty: none written.
+  /// particles.xdmf and series.csv rewritten. `extras` go beside the file's "/table" (the APIC matrices,
+  /// one per record in the same order, and the lagged friction strengths; particle_table.hpp).
   void write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
-                    std::span<const std::array<double, 4>> affine = {});
+                    const ParticleFileExtras& extras = {});
   /// A series.csv row only (the last step of a run when it is not an output step).
   void write_series_row(long long step, double time, double dt, std::span<const ParticleRecord> particles);
   /// The last good state after a numerical failure: particles<step>.h5 (resumable), listed in the XDMF.
   std::filesystem::path write_state(long long step, double time, std::span<const ParticleRecord> particles,
-                                    std::span<const std::array<double, 4>> affine = {});
+                                    const ParticleFileExtras& extras = {});
 
  private:
   static constexpr const char* kStartFile = "initial_state.h5";
   void prepare();
   void write_particles(long long step, double time, std::span<const ParticleRecord> particles,
-                       std::span<const std::array<double, 4>> affine);
+                       const ParticleFileExtras& extras);
   void add_frame(const XdmfFrame& frame, std::span<const ParticleRecord> particles);
   std::optional<XdmfFrame> read_start_frame() const;
   bool writes_vtk() const;

@@ -51,17 +51,4 @@ void read_velocity_transfer(StrictObject& a, Analysis& an) {
   }
 }
 
-void read_resume_affine(const std::filesystem::path& file, const std::string& shown, Deck& deck) {
-  if (deck.analysis.transfer != Transfer::APIC) return;
-  auto affine = read_affine_dataset(file, deck.particles.size());
-  if (affine) {
-    deck.particle_affine = std::move(*affine);
-  } else {
-    deck.particle_affine.clear();
-    deck.warnings.push_back(shown + " has no /" + std::string(kAffineDataset) +
-                            " dataset: the APIC transfer resumes from zero affine matrices (not bit for bit the run "
-                            "that wrote it, if that run used APIC)");
-  }
-}
-
 }  // namespace mpm::io

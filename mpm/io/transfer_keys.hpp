@@ -1,7 +1,6 @@
 #pragma once
 // The velocity-transfer keys of a deck's analysis object: CB-Geo's velocity_update and this project's
 // transfer and pic_blend (mpm/README.md, "Extensions"), read and checked together.
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -21,11 +20,5 @@ const std::string& transfer_name(Transfer t);
 /// [0, 1] applies to FLIP only. Sets an.velocity_update = (transfer is PIC) and an.pic_blend = 1 for
 /// PIC. A disagreement or a misplaced key is a common::InputError naming the key.
 void read_velocity_transfer(StrictObject& analysis, Analysis& an);
-
-/// On resume with the APIC transfer: deck.particle_affine from the resume file's kAffineDataset (rows in
-/// deck.particles order, read from `file`, named `shown` in messages). A file without it (written by
-/// CB-Geo, by fem2mpm or by a FLIP / PIC run) resumes from zero matrices, with a warning in deck.warnings.
-/// Other transfers ignore the dataset.
-void read_resume_affine(const std::filesystem::path& file, const std::string& shown, Deck& deck);
 
 }  // namespace mpm::io

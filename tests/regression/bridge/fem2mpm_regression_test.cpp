@@ -371,6 +371,27 @@ TEST(Fem2mpmRegression, WholeChainFemTclToFem2mpmToMpm) {
   EXPECT_GT(moved, 0.0);
   EXPECT_LT(moved, 0.05);
   EXPECT_TRUE(fs::exists(deck / "results/column/particles100.h5"));
+  EXPECT_FALSE(mpm::io::read_friction_memory_dataset(deck / "results/column/particles050.h5").has_value());
+
+  // With --base-lag the transfer file carries an empty friction memory (every base node starts from its
+  // instantaneous normal force), so mpm resumes from it without a warning, and its own files carry the
+  // memory of the base nodes the column stands on.
+  const fs::path lagged = dir / "deck_lag";
+  const Result rl = run("--model " + (dir / "model.json").string() + " --disp " + (dir / "disp.out").string() + " --vel " +
+                            (dir / "vel.out").string() + " --stress " + (dir / "stress.out").string() +
+                            " --units kN --time 0.1 --recovery spr --dt 2e-4 --nsteps 101 --output-steps 50 --base-lag 0.1 1 --out " +
+                            lagged.string(),
+                        dir);
+  ASSERT_EQ(rl.code, 0) << rl.err;
+  const auto start_memory = mpm::io::read_friction_memory_dataset(lagged / "results/column/particles000.h5");
+  ASSERT_TRUE(start_memory.has_value());
+  EXPECT_TRUE(start_memory->empty());
+  ASSERT_EQ(std::system((mpm.string() + " -f " + lagged.string() + "/ -i mpm.json > " + (dir / "mpm_lag.txt").string() + " 2>&1").c_str()), 0)
+      << slurp(dir / "mpm_lag.txt");
+  EXPECT_EQ(slurp(dir / "mpm_lag.txt").find("warning"), std::string::npos) << slurp(dir / "mpm_lag.txt");
+  const auto memory = mpm::io::read_friction_memory_dataset(lagged / "results/column/particles050.h5");
+  ASSERT_TRUE(memory.has_value());
+  EXPECT_FALSE(memory->empty());
 }
 
 // The whole chain with fem2mpm's defaults on a layered cut slope (layered_slope.tcl, issue 9): the FEM

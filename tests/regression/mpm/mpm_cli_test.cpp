@@ -33,15 +33,18 @@ std::size_t line_count(const std::string& s) { return static_cast<std::size_t>(s
 /// Runs the uninterrupted deck in folder A, then in folder B resumes from A's output at `resume_step`
 /// and checks that every later output and series.csv are identical.
 /// `analysis` keys are set in both decks (e.g. the transfer); with APIC the affine matrices beside the
-/// tables must be identical too.
+/// tables must be identical too. `normal_lag` (when given) is set on every friction constraint, and the
+/// lagged strengths beside the tables must be identical too.
 void check_resume(const std::string& name, const std::string& uuid, long long nsteps, long long every, long long resume_step,
-                  const std::string& threads, const json& analysis = json::object()) {
+                  const std::string& threads, const json& analysis = json::object(), const json& normal_lag = nullptr) {
   const fs::path a = copy_case(name, name + "_full"), b = copy_case(name, name + "_resumed");
   for (const fs::path& d : {a, b}) {
     json deck = load(d / "mpm.json");
     deck["analysis"]["nsteps"] = nsteps;
     deck["post_processing"]["output_steps"] = every;
     for (const auto& [k, v] : analysis.items()) deck["analysis"][k] = v;
+    if (!normal_lag.is_null())
+      for (json& c : deck["mesh"]["boundary_conditions"]["friction_constraints"]) c["normal_lag"] = normal_lag;
     save(d / "mpm.json", deck);
   }
   const auto full = run_mpm(a, "mpm.json", threads);
@@ -65,6 +68,13 @@ void check_resume(const std::string& name, const std::string& uuid, long long ns
     if (affine_a) {
       EXPECT_TRUE(*affine_a == *mpm::io::read_affine_dataset(fb, affine_a->size())) << fb;
     }
+    const auto memory_a = mpm::io::read_friction_memory_dataset(fa);
+    EXPECT_EQ(memory_a.has_value(), !normal_lag.is_null()) << fa;
+    if (memory_a) {
+      EXPECT_FALSE(memory_a->empty()) << fa << ": the column stands on its lagged base";
+      EXPECT_TRUE(*memory_a == mpm::io::read_friction_memory_dataset(fb).value_or(std::vector<mpm::io::FrictionMemoryRecord>{}))
+          << fb;
+    }
   }
   EXPECT_EQ(file_text(ra / "series.csv"), file_text(rb / "series.csv"));
 }
@@ -85,6 +95,12 @@ TEST(MpmResume, MohrCoulombGimpColumnContinuesBitForBit) {
 TEST(MpmResume, ApicGimpColumnContinuesBitForBit) {
   // As above with the APIC transfer: the affine matrices travel in /apic_affine beside /table.
   check_resume("mc_column_gimp_short", "mc_column", 601, 100, 300, "--threads 2", {{"transfer", "apic"}});
+}
+
+TEST(MpmResume, LaggedFrictionContinuesBitForBit) {
+  // As above with a lagged base friction (FLIP): the strengths travel in /friction_memory beside /table.
+  check_resume("mc_column_gimp_short", "mc_column", 601, 100, 300, "--threads 2", json::object(),
+               {{"slip_distance", 0.01}, {"reference_velocity", 0.1}});
 }
 
 TEST(MpmResume, ApicFromAFileWithoutMatricesWarnsAndStartsFromZero) {

@@ -257,6 +257,46 @@ TEST(Simulation, ApicResumeContinuesBitIdenticallyFromItsMatrices) {
   }
 }
 
+TEST(Simulation, LaggedFrictionResumeContinuesBitIdenticallyFromItsMemory) {
+  // With a normal_lag the state includes each base node's lagged strength N_s (lagged_friction.hpp):
+  // resumed with the memory of the snapshot the run continues bit for bit; resumed without it (the
+  // strengths restart from the instantaneous normal forces) it does not; a memory for a node without a
+  // lagged friction is refused.
+  Deck deck = collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16);
+  ASSERT_EQ(deck.friction_constraints.size(), 1u);
+  deck.friction_constraints[0].lag_slip_distance = 0.01;
+  deck.friction_constraints[0].lag_reference_velocity = 0.1;
+  Simulation full(deck, 2);
+  Deck resumed_deck = deck, fresh_deck = deck;
+  for (int i = 0; i < 60; ++i) {
+    if (i == 25) {
+      resumed_deck.particles = fresh_deck.particles = full.snapshot();
+      resumed_deck.friction_memory = full.friction_memory_snapshot().value();
+    }
+    full.step();
+  }
+  ASSERT_FALSE(resumed_deck.friction_memory.empty());
+  resumed_deck.resumed = fresh_deck.resumed = true;
+  resumed_deck.first_step = fresh_deck.first_step = 25;
+  Simulation resumed(resumed_deck, 2), fresh(fresh_deck, 2);
+  EXPECT_TRUE(resumed.friction_memory_snapshot().value() == resumed_deck.friction_memory);
+  while (resumed.step_index() < 60) resumed.step();
+  while (fresh.step_index() < 60) fresh.step();
+  EXPECT_TRUE(identical(resumed.snapshot(), full.snapshot()));
+  EXPECT_TRUE(resumed.friction_memory_snapshot() == full.friction_memory_snapshot());
+  EXPECT_FALSE(identical(fresh.snapshot(), full.snapshot()));
+
+  EXPECT_FALSE(Simulation(collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16), 1).friction_memory_snapshot());
+  Deck stray = resumed_deck;
+  stray.friction_memory = {{static_cast<std::int64_t>(stray.grid.nodes_x * stray.grid.nodes_y - 1), 1.0, 1.0}};
+  try {
+    Simulation sim(stray, 1);
+    ADD_FAILURE() << "the top corner node has no lagged friction";
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("friction_memory[0]"), std::string::npos) << e.what();
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     SchemesShapesRemediesThreads, Resume,
     ::testing::Values(std::make_tuple(mpm::io::Scheme::USF, CellType::Gimp16, std::string("none"), 1),

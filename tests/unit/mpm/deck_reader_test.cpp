@@ -236,9 +236,10 @@ TEST(DeckReader, ResumeReadsTheHdf5StateAndStartsAfterItsStep) {
   EXPECT_EQ(deck.output.uuid, "bar_resume");
 }
 
-// A resumed deck whose friction has a normal_lag: the lagged strengths are not in the particle file (they
-// restart from the instantaneous normal forces), and the reader says so.
-TEST(DeckReader, ResumeWithALaggedFrictionWarnsThatItsMemoryRestarts) {
+// A resumed deck whose friction has a normal_lag takes the lagged strengths from the particle file's
+// /friction_memory; a file without it (CB-Geo's, fem2mpm's, a run without the lag) restarts them from the
+// instantaneous normal forces, and the reader says so; a row for a node without the lag is an error.
+TEST(DeckReader, ResumeWithALaggedFrictionReadsItsMemoryOrWarnsThatItRestarts) {
   const auto dir = test_support::fresh_scratch_folder("geoflow_deck_reader", "resume_lag");
   std::filesystem::copy(kCbgeo / "resume_from_h5", dir, std::filesystem::copy_options::recursive);
   auto deck_json = json::parse(std::ifstream(dir / "mpm.json"));
@@ -247,10 +248,43 @@ TEST(DeckReader, ResumeWithALaggedFrictionWarnsThatItsMemoryRestarts) {
       R"([{"nset_id": -1, "dir": 1, "sign_n": -1, "friction": 0.3,
            "normal_lag": {"slip_distance": 0.1, "reference_velocity": 1.0}}])");
   std::ofstream(dir / "mpm.json") << deck_json.dump(1);
-  const auto warnings = mpm::io::read_deck(dir, "mpm.json").warnings;
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_MESSAGE_HAS(warnings[0], "normal_lag");
-  EXPECT_MESSAGE_HAS(warnings[0], "restart from the instantaneous normal forces");
+  const auto deck = mpm::io::read_deck(dir, "mpm.json");
+  ASSERT_EQ(deck.warnings.size(), 1u);
+  EXPECT_MESSAGE_HAS(deck.warnings[0], "normal_lag");
+  EXPECT_MESSAGE_HAS(deck.warnings[0], "has no /friction_memory dataset");
+  EXPECT_MESSAGE_HAS(deck.warnings[0], "restart from the instantaneous normal forces");
+  EXPECT_TRUE(deck.friction_memory.empty());
+
+  // The same file with the dataset: read, no warning.
+  const auto file = dir / "results/bar_resume/particles000.h5";
+  const auto table = mpm::io::read_particle_table(file);
+  const auto rewrite = [&](const std::vector<mpm::io::FrictionMemoryRecord>& memory) {
+    std::filesystem::remove(file);
+    mpm::io::write_particle_table(file, table,
+                                  [&](std::int64_t h5) { mpm::io::write_friction_memory_dataset(h5, memory, "test"); });
+  };
+  ASSERT_FALSE(deck.friction_constraints.empty());
+  ASSERT_FALSE(deck.friction_constraints[0].nodes.empty());
+  const std::vector<mpm::io::FrictionMemoryRecord> memory = {{deck.friction_constraints[0].nodes[0], 12.5, 0.75}};
+  rewrite(memory);
+  const auto with = mpm::io::read_deck(dir, "mpm.json");
+  EXPECT_TRUE(with.warnings.empty());
+  EXPECT_TRUE(with.friction_memory == memory);
+
+  // A node the lag does not cover.
+  deck_json["mesh"]["boundary_conditions"]["friction_constraints"][0]["nset_id"] = 0;
+  std::ofstream(dir / "mpm.json") << deck_json.dump(1);
+  const auto covered = mpm::io::read_deck(dir, "mpm.json").friction_constraints[0].nodes;
+  int outside = 0;
+  while (std::find(covered.begin(), covered.end(), outside) != covered.end()) ++outside;
+  rewrite({{outside, 1.0, 1.0}});
+  try {
+    mpm::io::read_deck(dir, "mpm.json");
+    ADD_FAILURE() << "node " << outside << " has no lagged friction";
+  } catch (const common::InputError& e) {
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "particles000.h5");
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "row 0: node " + std::to_string(outside) + " has no friction constraint with a normal_lag");
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -1,0 +1,52 @@
+#include "mpm/io/resume_extras.hpp"
+
+#include <set>
+
+#include "common/input_error.hpp"
+
+namespace mpm::io {
+namespace {
+
+void read_resume_affine(const std::filesystem::path& file, const std::string& rshown, Deck& deck) {
+  if (deck.analysis.transfer != Transfer::APIC) return;
+  auto affine = read_affine_dataset(file, deck.particles.size());
+  if (affine) {
+    deck.particle_affine = std::move(*affine);
+  } else {
+    deck.particle_affine.clear();
+    deck.warnings.push_back(rshown + " has no /" + std::string(kAffineDataset) +
+                            " dataset: the APIC transfer resumes from zero affine matrices (not bit for bit the run "
+                            "that wrote it, if that run used APIC)");
+  }
+}
+
+void read_resume_friction_memory(const std::filesystem::path& file, const std::string& shown, const std::string& rshown,
+                                 Deck& deck) {
+  std::set<std::int64_t> lagged;
+  for (const FrictionConstraint& c : deck.friction_constraints)
+    if (c.lag_slip_distance > 0) lagged.insert(c.nodes.begin(), c.nodes.end());
+  if (lagged.empty()) return;
+  auto memory = read_friction_memory_dataset(file);
+  if (!memory) {
+    deck.warnings.push_back(shown + ": friction_constraints[].normal_lag: " + rshown + " has no /" +
+                            std::string(kFrictionMemoryDataset) + " dataset: the lagged strengths restart from the "
+                            "instantaneous normal forces (not bit for bit the run that wrote it, if that run had the lag)");
+    return;
+  }
+  for (std::size_t k = 0; k < memory->size(); ++k)
+    if (!lagged.contains((*memory)[k].node))
+      throw common::InputError(rshown, "dataset \"/" + std::string(kFrictionMemoryDataset) + "\" row " + std::to_string(k) +
+                                           ": node " + std::to_string((*memory)[k].node) + " has no friction constraint "
+                                           "with a normal_lag in " + shown);
+  deck.friction_memory = std::move(*memory);
+}
+
+}  // namespace
+
+void read_resume_extras(const std::filesystem::path& file, const std::string& shown, const std::string& rshown,
+                        Deck& deck) {
+  read_resume_affine(file, rshown, deck);
+  read_resume_friction_memory(file, shown, rshown, deck);
+}
+
+}  // namespace mpm::io

@@ -1,0 +1,22 @@
+#pragma once
+// What a resumed run reads from its particle file beside CB-Geo's "/table": the APIC matrices and the
+// lagged friction strengths (particle_table.hpp), without which it does not continue bit for bit.
+#include <filesystem>
+#include <string>
+
+#include "mpm/io/deck.hpp"
+
+namespace mpm::io {
+
+/// On resume, from the resume `file` (named `rshown` in messages; the deck is named `shown`):
+/// - with the APIC transfer, deck.particle_affine from kAffineDataset (rows in deck.particles order). A
+///   file without it (written by CB-Geo, by fem2mpm or by a FLIP / PIC run) resumes from zero matrices,
+///   with a warning in deck.warnings; other transfers ignore the dataset;
+/// - with a friction_constraints[].normal_lag, deck.friction_memory from kFrictionMemoryDataset; a row
+///   whose node has no lagged friction constraint is a common::InputError naming the file and row. A
+///   file without it restarts the memory from the instantaneous normal forces, with a warning; decks
+///   without a lag ignore the dataset.
+void read_resume_extras(const std::filesystem::path& file, const std::string& shown, const std::string& rshown,
+                        Deck& deck);
+
+}  // namespace mpm::io
