@@ -2,16 +2,17 @@
 """FLIP, PIC, a 2 % PIC blend and APIC side by side on MPM-only column collapses (issue 10 item 3).
 
     scripts/column_collapse/transfer_study.py [--out DIR] [--jobs N] [--aspect 3,0.8] [--transfers flip,pic,blend,apic]
-                                              [--halved apic] [--tau 7] [--smoothing none] [--base friction]
-                                              [--normal-lag L,V*]
+                                              [--halved apic] [--doubled ''] [--tau 7] [--smoothing none]
+                                              [--base friction] [--normal-lag L,V*]
 
-Each run: the paper's soil (study.py), GIMP cells of 1 m (and 0.5 m for --halved transfers), 4 x 4 particles
+Each run: the paper's soil (study.py), GIMP cells of 1 m (0.5 m for --halved, 2 m for --doubled transfers), 4 x 4 particles
 per cell, MUSL, CFL 0.5, base friction tan(phi), analysis.stress_smoothing --smoothing, the base --base
 (friction: y-velocity 0 and Coulomb friction, CB-Geo's; contact: one-sided frictional contact), to t = --tau * tau_c (tau_c = sqrt(H0 / g)). Columns:
 a = 3 is 10 m x 30 m, a = 0.8 the paper's 50 m x 40 m. Per run: runout (L - L0)/L0 and PE/PE0 at the end, the
 largest particle speed and KE/PE0 at the end, the time (t/tau_c) after which the run stays at rest
 (max speed < 0.05 m/s and KE/PE0 < 1e-5), and the wall time per step (on whatever machine ran it). Writes
-summary.md (a Markdown table) and summary.json to --out.
+summary.md (a Markdown table), summary.json and rest.png (each run's largest speed and KE/PE0 against t/tau_c) to
+--out.
 """
 import argparse
 import concurrent.futures
@@ -44,8 +45,19 @@ def run_one(bins, out, a, key, cell, tau, smoothing, base, normal_lag=None):
                                  normal_lag=normal_lag)
     except RuntimeError as e:
         return {"name": name, "a": a, "key": key, "cell": cell, "failed": str(e).splitlines()[-1][:200]}
-    s = study.read_series(run["results"])
-    with open(os.path.join(run["dir"], "mpm.json")) as f:
+    r = summarize(run["dir"], a, key, cell)
+    r.update({"ms_per_step": 1e3 * run["wall"]["mpm"] / r["nsteps"], "wall": run["wall"]["mpm"],
+              "elapsed": time.time() - t0})
+    return r
+
+
+def summarize(run_dir, a, key, cell):
+    """The measures of one finished run in `run_dir` (its mpm.json and results/column/series.csv), and its
+    largest particle speed and KE/PE0 against t/tau_c (for rest.png)."""
+    width, height = COLUMNS[a]
+    scene = study.Scene(width, height, cell, 4, out_every=0.1)
+    s = study.read_series(os.path.join(run_dir, "results", "column"))
+    with open(os.path.join(run_dir, "mpm.json")) as f:
         nsteps = json.load(f)["analysis"]["nsteps"]
     pe0 = s["potential_energy"][0]
     ke = (s["kinetic_energy_x"] + s["kinetic_energy_y"]) / pe0
@@ -55,11 +67,38 @@ def run_one(bins, out, a, key, cell, tau, smoothing, base, normal_lag=None):
     if at_rest[-1]:
         moving = np.nonzero(~at_rest)[0]
         rest = float(t_star[moving[-1] + 1]) if len(moving) else float(t_star[0])
-    return {"name": name, "a": a, "key": key, "cell": cell, "t_end": float(t_star[-1]),
+    return {"name": os.path.basename(run_dir), "a": a, "key": key, "cell": cell, "t_end": float(t_star[-1]),
             "runout": float((s["runout_x_p98"][-1] - width) / width), "pe": float(s["potential_energy"][-1] / pe0),
-            "max_speed": float(s["max_speed"][-1]), "ke": float(ke[-1]), "rest": rest,
-            "ms_per_step": 1e3 * run["wall"]["mpm"] / nsteps, "particles": int(s["n_particles"][-1]),
-            "wall": run["wall"]["mpm"], "elapsed": time.time() - t0}
+            "max_speed": float(s["max_speed"][-1]), "ke": float(ke[-1]), "rest": rest, "nsteps": nsteps,
+            "particles": int(s["n_particles"][-1]),
+            "history": {"t_star": t_star.tolist(), "max_speed": s["max_speed"].tolist(), "ke": ke.tolist()}}
+
+
+def plot_rest(results, path):
+    """rest.png: each run's largest particle speed and KE/PE0 against t/tau_c, with the resting thresholds."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    runs = sorted((r for r in results if "history" in r), key=lambda r: (-r["a"], r["key"], -r["cell"]))
+    if not runs:
+        return
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.5, 7), sharex=True)
+    for r in runs:
+        h = r["history"]
+        rest = "at rest from %.2f" % r["rest"] if r["rest"] is not None else "not at rest"
+        label = "a = %g, %s, %g m cells: runout %.3f, %s" % (r["a"], LABELS[r["key"]], r["cell"], r["runout"], rest)
+        line, = top.semilogy(h["t_star"], np.maximum(h["max_speed"], 1e-6), lw=1.2, label=label)
+        bottom.semilogy(h["t_star"], np.maximum(h["ke"], 1e-14), lw=1.2, color=line.get_color())
+    top.axhline(REST_SPEED, color="k", ls="--", lw=0.8)
+    bottom.axhline(REST_KE, color="k", ls="--", lw=0.8)
+    top.set_ylabel("largest particle speed (m/s)")
+    bottom.set_ylabel("KE / PE0")
+    bottom.set_xlabel("t / tau_c")
+    top.legend(fontsize=7, loc="lower left")
+    top.set_title("When the column comes to rest (dashed: the resting thresholds)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def table(results):
@@ -83,6 +122,7 @@ def main(argv=None):
     ap.add_argument("--aspect", default="3,0.8")
     ap.add_argument("--transfers", default="flip,pic,blend,apic")
     ap.add_argument("--halved", default="apic", help="transfers also run with 0.5 m cells ('' for none)")
+    ap.add_argument("--doubled", default="", help="transfers also run with 2 m cells ('' for none)")
     ap.add_argument("--tau", type=float, default=7.0, help="end time in units of tau_c")
     ap.add_argument("--smoothing", default="none", help="analysis.stress_smoothing of every run (e.g. cell_strain)")
     ap.add_argument("--normal-lag", default="", help="L,V*: the base friction's normal_lag (slip distance m, "
@@ -101,6 +141,8 @@ def main(argv=None):
             jobs.append((a, key, 1.0))
         for key in [k for k in args.halved.split(",") if k]:
             jobs.append((a, key, 0.5))
+        for key in [k for k in args.doubled.split(",") if k]:
+            jobs.append((a, key, 2.0))
     results = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         lag = None if not args.normal_lag else tuple(float(v) for v in args.normal_lag.split(","))
@@ -114,6 +156,7 @@ def main(argv=None):
                 json.dump(results, g, indent=1)
             with open(os.path.join(args.out, "summary.md"), "w") as g:
                 g.write(table(results))
+    plot_rest(results, os.path.join(args.out, "rest.png"))
     print(table(results))
 
 
