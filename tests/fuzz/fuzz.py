@@ -16,7 +16,7 @@ inflated), runs the program in a fresh folder with a time limit, and classifies 
                 run that failed (fem2mpm promises nothing is written on error)
 
 Targets: tcl (fem_tcl scripts), fem2mpm (recorder files, model JSON, options), mpm (CB-Geo JSON,
-mesh, particle and entity-set files), hdf5 (the particle /table read on resume).
+mesh, particle and entity-set files), hdf5 (the particle /table read on resume, and the /friction_memory and /apic_affine beside it).
 
   smoke run (CI, ctest -L fuzz):  tests/fuzz/fuzz.py --bin build-asan/bin --cases 75
   long run:                        tests/fuzz/fuzz.py --bin build-asan/bin --cases 10000 --jobs 2
@@ -413,10 +413,50 @@ def case_mpm(rng, folder: Path, bins: Path, seeds, timeout):
     return classify(rc, err, folder, since, inputs, last_line_only=False)
 
 
+def add_resume_extras(folder: Path, h5: Path, rng):
+    """The datasets mpm reads beside /table (mpm/io/resume_extras.hpp), with the deck keys that make it read
+    them: /friction_memory for a lagged base friction on node set 0, /apic_affine for the APIC transfer; each
+    of a valid shape with odd values, or of an odd shape or type."""
+    import h5py
+    import numpy as np
+    deck = json.loads((folder / "mpm.json").read_text())
+    deck["mesh"].setdefault("boundary_conditions", {})["friction_constraints"] = [
+        {"nset_id": 0, "dir": 1, "sign_n": -1, "friction": 0.3,
+         "normal_lag": {"slip_distance": 0.1, "reference_velocity": 1.0}}]
+    apic = rng.random() < 0.5
+    if apic:
+        deck["analysis"].pop("velocity_update", None)
+        deck["analysis"]["transfer"] = "apic"
+    (folder / "mpm.json").write_text(json.dumps(deck, indent=1))
+    nodes = json.loads((folder / "entity_sets.json").read_text())["node_sets"][0]["set"]
+    odd = [np.nan, np.inf, -1.0, 0.0, 1e308, 1e-320, 0.5, 2.0**60]
+    with h5py.File(h5, "r+") as f:
+        rows = len(f["table"])
+        shapes = {"friction_memory": [(rng.choice([0, 1, 3, 9]), 3), (2, 2), (3,), (1, 4)],
+                  "apic_affine": [(rows, 4), (rows + 1, 4), (rows, 3), (rows,)]}
+        for name in (["friction_memory"] + (["apic_affine"] if apic else [])):
+            shape = rng.choice(shapes[name]) if rng.random() < 0.3 else shapes[name][0]
+            data = np.zeros(shape)
+            if name == "friction_memory" and len(shape) == 2 and shape[1] == 3:
+                for r in range(shape[0]):
+                    data[r] = [rng.choice(nodes), rng.uniform(0, 1e4), rng.uniform(1e-3, 10)]
+            flat = data.reshape(-1)
+            for _ in range(rng.choice([0, 1, 2]) if flat.size else 0):
+                flat[rng.randrange(flat.size)] = rng.choice(odd)
+            dtype = rng.choice(["f8", "f8", "f4", "i4"])
+            with np.errstate(invalid="ignore", over="ignore"):  # nan and 1e308 as i4 / f4: odd on purpose
+                f.create_dataset(name, data=data.astype(dtype))
+
+
 def case_hdf5(rng, folder: Path, bins: Path, seeds, timeout):
     copy_case("resume_from_h5", folder)
     prepare_deck(folder, rng, False)
     h5 = next((folder / "results").rglob("*.h5"))
+    if rng.random() < 0.3:
+        try:
+            add_resume_extras(folder, h5, rng)
+        except ImportError:
+            pass
     if rng.random() < 0.5:
         h5.write_bytes(mutate_binary(h5.read_bytes(), rng))
     else:
