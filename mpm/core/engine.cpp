@@ -951,12 +951,12 @@ void Engine::restore_friction_memory(const std::vector<io::FrictionMemoryRecord>
   for (std::size_t k = 0; k < memory.size(); ++k) {
     const io::FrictionMemoryRecord& r = memory[k];
     const std::string where = "friction_memory[" + std::to_string(k) + "]";
-    if (r.node < 0 || static_cast<std::size_t>(r.node) >= nodes_ || constraint_of_[static_cast<std::size_t>(r.node)] < 0 ||
-        !constraints_[static_cast<std::size_t>(constraint_of_[static_cast<std::size_t>(r.node)])].lag.active())
+    const std::int32_t c = r.node >= 0 && static_cast<std::size_t>(r.node) < nodes_ ? constraint_of_[static_cast<std::size_t>(r.node)] : -1;
+    if (c < 0 || !constraints_[static_cast<std::size_t>(c)].lag.active())
       throw common::InputError(where, "node " + std::to_string(r.node) + " has no friction constraint with a normal_lag");
     if (!(r.force >= 0.0 && std::isfinite(r.force)) || !(r.mass > 0.0 && std::isfinite(r.mass)))
       throw common::InputError(where, "expected a finite force >= 0 and mass > 0");
-    normal_memory_[static_cast<std::size_t>(constraint_of_[static_cast<std::size_t>(r.node)])] = NormalMemory{r.force, r.mass};
+    normal_memory_[static_cast<std::size_t>(c)] = NormalMemory{r.force, r.mass};
   }
 }
 
