@@ -147,6 +147,27 @@ void write_particle_table(const std::filesystem::path& file, std::span<const Par
   common::commit_file(temporary, file);
 }
 
+namespace {
+/// A dataset's declared row count, checked before allocating: against the bytes the file holds (rows
+/// stored unfiltered, as H5TB, CB-Geo, h5py and this project write them, take at least `file_row_bytes`
+/// each) and against what this machine can hold (`memory_row_bytes` each). Throws common::InputError
+/// naming `file` and the dataset (`what`); `items` names the rows in the second message.
+void check_declared_rows(const std::filesystem::path& file, hid_t dset, hsize_t rows, std::size_t file_row_bytes,
+                         std::size_t memory_row_bytes, const std::string& what, const std::string& items) {
+  std::error_code ec;
+  const auto file_bytes = std::filesystem::file_size(file, ec);
+  Handle plist(H5Dget_create_plist(dset), H5Pclose);
+  const bool filtered = plist.valid() && H5Pget_nfilters(plist.get()) > 0;
+  const double declared = static_cast<double>(rows) * static_cast<double>(file_row_bytes);
+  if (!filtered && !ec && declared > static_cast<double>(file_bytes))
+    throw common::InputError(file.string(), what + " declares " + std::to_string(rows) + " rows (" +
+                                                std::to_string(file_row_bytes) + " bytes each) but the file has only " +
+                                                std::to_string(file_bytes) + " bytes (truncated or corrupt file)");
+  if (const auto problem = common::size_problem(static_cast<double>(rows), memory_row_bytes, items); !problem.empty())
+    throw common::InputError(file.string(), what + ": " + problem);
+}
+}  // namespace
+
 std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& file) {
   QuietHdf5 quiet;
   if (!std::filesystem::exists(file)) throw common::InputError(file.string(), "particle file not found");
@@ -162,23 +183,8 @@ std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& fil
     throw common::InputError(file.string(), "\"/table\" must be one-dimensional");
   hsize_t n = 0;
   H5Sget_simple_extent_dims(space.get(), &n, nullptr);
-  // The declared row count is checked before allocating: against the bytes the file holds (rows are
-  // stored unfiltered by H5TB, CB-Geo and h5py's defaults) and against what this machine can hold.
-  {
-    const std::size_t row_bytes = H5Tget_size(ftype.get());
-    std::error_code ec;
-    const auto file_bytes = std::filesystem::file_size(file, ec);
-    Handle plist(H5Dget_create_plist(dset.get()), H5Pclose);
-    const bool filtered = plist.valid() && H5Pget_nfilters(plist.get()) > 0;
-    const double declared = static_cast<double>(n) * static_cast<double>(row_bytes);
-    if (!filtered && !ec && declared > static_cast<double>(file_bytes))
-      throw common::InputError(file.string(), "\"/table\" declares " + std::to_string(n) + " rows (" +
-                                                  std::to_string(row_bytes) + " bytes each) but the file has only " +
-                                                  std::to_string(file_bytes) + " bytes (truncated or corrupt file)");
-    if (const auto problem = common::size_problem(static_cast<double>(n), sizeof(ParticleRecord), "particle rows");
-        !problem.empty())
-      throw common::InputError(file.string(), "\"/table\": " + problem);
-  }
+  check_declared_rows(file, dset.get(), n, H5Tget_size(ftype.get()), sizeof(ParticleRecord), "\"/table\"",
+                      "particle rows");
 
   // Memory type matched by member name; every schema member must be in the file.
   Handle mtype(H5Tcreate(H5T_COMPOUND, sizeof(ParticleRecord)), H5Tclose);
@@ -242,17 +248,8 @@ std::optional<std::vector<std::array<double, Columns>>> read_rows(const std::fil
   if (H5Tget_class(ftype.get()) != H5T_FLOAT || H5Sget_simple_extent_ndims(space.get()) != 2 ||
       H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 || (rows && dims[0] != *rows) || dims[1] != Columns)
     throw common::InputError(file.string(), what + " must be " + shape);
-  // As for "/table": the declared size is checked against the file before allocating.
-  std::error_code ec;
-  const auto file_bytes = std::filesystem::file_size(file, ec);
-  Handle plist(H5Dget_create_plist(dset.get()), H5Pclose);
-  const bool filtered = plist.valid() && H5Pget_nfilters(plist.get()) > 0;
-  if (!filtered && !ec && static_cast<double>(dims[0]) * Columns * sizeof(double) > static_cast<double>(file_bytes))
-    throw common::InputError(file.string(), what + " declares " + std::to_string(dims[0]) + " rows but the file has only " +
-                                                std::to_string(file_bytes) + " bytes (truncated or corrupt file)");
-  if (const auto problem = common::size_problem(static_cast<double>(dims[0]), Columns * sizeof(double), "rows");
-      !problem.empty())
-    throw common::InputError(file.string(), what + ": " + problem);
+  check_declared_rows(file, dset.get(), dims[0], Columns * H5Tget_size(ftype.get()), Columns * sizeof(double), what,
+                      "rows");
   std::vector<std::array<double, Columns>> out(static_cast<std::size_t>(dims[0]));
   if (!out.empty() && H5Dread(dset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
     throw common::InputError(file.string(), "reading " + what + " failed (truncated or corrupt file?)");
