@@ -98,4 +98,40 @@ void CommandArgs::expect_end() const {
   if (!empty()) fail("unexpected argument '" + printable(words_[next_]) + "'");
 }
 
+std::optional<std::vector<std::string>> CommandArgs::split_list(std::string_view text) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; };
+  while (true) {
+    while (i < text.size() && space(text[i])) ++i;
+    if (i == text.size()) return out;
+    std::string element;
+    if (text[i] == '{') {
+      int depth = 1;
+      std::size_t j = i + 1;
+      for (; j < text.size() && depth > 0; ++j) {
+        if (text[j] == '\\' && j + 1 < text.size()) { ++j; continue; }
+        depth += text[j] == '{' ? 1 : text[j] == '}' ? -1 : 0;
+      }
+      if (depth != 0) return std::nullopt;
+      element = std::string(text.substr(i + 1, j - i - 2));
+      i = j;
+    } else if (text[i] == '"') {
+      std::size_t j = i + 1;
+      for (; j < text.size() && text[j] != '"'; ++j) {
+        if (text[j] == '\\' && j + 1 < text.size()) ++j;
+        element += text[j];
+      }
+      if (j == text.size()) return std::nullopt;
+      i = j + 1;
+    } else {
+      for (; i < text.size() && !space(text[i]); ++i) {
+        if (text[i] == '\\' && i + 1 < text.size()) ++i;
+        element += text[i];
+      }
+    }
+    out.push_back(std::move(element));
+  }
+}
+
 }  // namespace common

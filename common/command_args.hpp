@@ -49,6 +49,9 @@ class CommandArgs {
   /// parse_number, and finite.
   static std::optional<double> parse_finite_number(std::string_view text);
   static std::optional<int> parse_integer(std::string_view text);
+  /// The elements of a Tcl list (Tcl_SplitList's rules: white space separates, {..} groups with nesting and
+  /// "..." quotes, a backslash escapes the next character); nullopt for an unmatched brace or quote.
+  static std::optional<std::vector<std::string>> split_list(std::string_view text);
 
  private:
   std::string command_;

@@ -11,9 +11,6 @@
 
 namespace fem::analysis {
 
-using domain::Matrix8;
-using domain::Vector8;
-
 Analysis::Analysis(domain::Domain& domain, AnalysisConfig config)
     : domain_(domain), config_(std::move(config)), test_(config_.test) {
   SolverKind kind{};
@@ -35,11 +32,17 @@ void Analysis::setup() {
     index[n.get()] = static_cast<int>(nodes_.size());
     nodes_.push_back(n.get());
   }
-  const int ndof = 2 * static_cast<int>(nodes_.size());
+  // Each node's dofs are consecutive in the full-dof vectors: node i owns first_dof_[i] .. + ndf - 1.
+  first_dof_.assign(nodes_.size() + 1, 0);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) first_dof_[i + 1] = first_dof_[i] + nodes_[i]->ndf;
+  const int ndof = first_dof_.back();
+  dof_node_.resize(ndof);
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    for (int d = 0; d < nodes_[i]->ndf; ++d) dof_node_[first_dof_[i] + d] = static_cast<int>(i);
   constexpr int kFree = 0, kFixed = -1;
   std::vector<int> state(ndof, kFree);
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    for (int d = 0; d < 2; ++d) if (nodes_[i]->fixed[d]) state[2 * i + d] = kFixed;
+    for (int d = 0; d < nodes_[i]->ndf; ++d) if (nodes_[i]->fixed[d]) state[first_dof_[i] + d] = kFixed;
   }
   const bool penalty = config_.handler == HandlerType::Penalty;
   prescribed_.clear();
@@ -48,7 +51,8 @@ void Analysis::setup() {
     for (const auto& sp : p->prescribed) {
       const domain::Node* n = domain_.find_node(sp.node);
       if (!n) continue;
-      const int dof = 2 * index[n] + sp.dof;
+      if (sp.dof >= n->ndf) continue;  // refused by `sp`; a node re-made with fewer dofs keeps none
+      const int dof = first_dof_[index[n]] + sp.dof;
       state[dof] = kFixed;
       prescribed_.push_back({dof, p.get(), sp.value});
     }
@@ -72,9 +76,11 @@ void Analysis::setup() {
     const domain::Node* k = domain_.find_node(c.constrained);
     if (!r || !k) continue;
     for (int d : c.dofs) {
-      if (penalty) penalty_pairs_.push_back({2 * index[r] + d, 2 * index[k] + d});
-      else alias[2 * index[k] + d] = 2 * index[r] + d;
-      if (!penalty && state[2 * index[k] + d] == kFixed && state[2 * index[r] + d] == kFree) {
+      if (d >= r->ndf || d >= k->ndf) continue;  // refused by `equalDOF`
+      const int rd = first_dof_[index[r]] + d, kd = first_dof_[index[k]] + d;
+      if (penalty) penalty_pairs_.push_back({rd, kd});
+      else alias[kd] = rd;
+      if (!penalty && state[kd] == kFixed && state[rd] == kFree) {
         std::cerr << "WARNING equalDOF " << c.retained << ' ' << c.constrained << ": dof " << d + 1 << " of the constrained node "
                   << c.constrained << " is also fixed, so the tie is not enforced (node " << c.retained
                   << " stays free in it); fix the retained node instead\n";
@@ -86,11 +92,15 @@ void Analysis::setup() {
   for (int i = 0; i < ndof; ++i) {
     if (state[i] == kFree && alias[i] < 0) eq_[i] = neq_++;
   }
+  tied_to_prescribed_.clear();
   for (int i = 0; i < ndof; ++i) {
     if (alias[i] >= 0 && state[i] == kFree) {
       int r = alias[i];
       for (int guard = 0; guard < ndof && alias[r] >= 0; ++guard) r = alias[r];
       eq_[i] = state[r] == kFree ? eq_[r] : -1;
+      // a dof tied to a prescribed one moves with it (OpenSees' TransformationDOF_Group: the constrained dof
+      // is the retained one, sp included)
+      if (state[r] != kFree) tied_to_prescribed_.push_back({i, r});
     }
   }
   if (!domain_.equal_dofs().empty() && config_.handler == HandlerType::Plain) {
@@ -99,28 +109,30 @@ void Analysis::setup() {
 
   elements_.clear();
   element_eq_.clear();
+  std::size_t entries = 0;
   for (const auto& [tag, e] : domain_.elements()) {
     elements_.push_back(e.get());
-    std::array<int, 8> ids;
-    ids.fill(-1);
+    ElementEquations ids;
+    ids.count = e->num_dofs();
+    const int per_node = e->dofs_per_node();
     for (int a = 0; a < e->num_nodes(); ++a) {
-      const int ni = index[e->nodes()[a]];
-      ids[2 * a] = eq_[2 * ni];
-      ids[2 * a + 1] = eq_[2 * ni + 1];
+      const int first = first_dof_[index[e->nodes()[a]]];
+      for (int d = 0; d < per_node; ++d) ids.eq[per_node * a + d] = eq_[first + d];
     }
     element_eq_.push_back(ids);
+    entries += static_cast<std::size_t>(ids.count * ids.count);
   }
   std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(elements_.size() * 64 + neq_);
+  triplets.reserve(entries + neq_);
   for (int i = 0; i < neq_; ++i) triplets.emplace_back(i, i, 0.0);
   for (const auto& pp : penalty_pairs_) {
     triplets.emplace_back(eq_[pp.retained], eq_[pp.constrained], 0.0);
     triplets.emplace_back(eq_[pp.constrained], eq_[pp.retained], 0.0);
   }
   for (const auto& ids : element_eq_) {
-    for (int a : ids) {
-      if (a < 0) continue;
-      for (int b : ids) if (b >= 0) triplets.emplace_back(a, b, 0.0);
+    for (int i = 0; i < ids.count; ++i) {
+      if (ids.eq[i] < 0) continue;
+      for (int j = 0; j < ids.count; ++j) if (ids.eq[j] >= 0) triplets.emplace_back(ids.eq[i], ids.eq[j], 0.0);
     }
   }
   Eigen::SparseMatrix<double> A(neq_, neq_);
@@ -132,14 +144,18 @@ void Analysis::setup() {
     const int* it = std::lower_bound(begin, end, row);
     return static_cast<int>(it - A.innerIndexPtr());
   };
-  element_pos_.assign(element_eq_.size(), {});
+  element_pos_.clear();
+  element_pos_.reserve(entries);
+  element_pos_first_.assign(element_eq_.size() + 1, 0);
   for (std::size_t e = 0; e < element_eq_.size(); ++e) {
     const auto& ids = element_eq_[e];
-    for (int i = 0; i < 8; ++i) {
-      for (int j = 0; j < 8; ++j) {
-        element_pos_[e][8 * j + i] = (ids[i] >= 0 && ids[j] >= 0) ? position(ids[i], ids[j]) : -1;
+    const int n = ids.count;
+    for (int j = 0; j < n; ++j) {  // column-major, as the element matrix
+      for (int i = 0; i < n; ++i) {
+        element_pos_.push_back((ids.eq[i] >= 0 && ids.eq[j] >= 0) ? position(ids.eq[i], ids.eq[j]) : -1);
       }
     }
+    element_pos_first_[e + 1] = element_pos_.size();
   }
   diag_pos_.resize(neq_);
   for (int i = 0; i < neq_; ++i) diag_pos_[i] = position(i, i);
@@ -173,33 +189,21 @@ void Analysis::form_tangent() {
   bool fixed = elastic;
   double* values = solver_->matrix().valuePtr();
   solver_->zero_values();
-  Matrix8 ke;
+  // `algorithm Newton -initial`: the initial stiffness replaces the current tangent (OpenSees INITIAL_TANGENT)
+  // `-elasticTangent` (fem_tcl): the elastic stiffness, the same matrix every step (factored once per dt)
+  const domain::SystemWeights weights{c1_, c2_, c3_,
+                                      config_.algorithm.elastic_tangent   ? domain::StiffnessKind::Elastic
+                                      : config_.algorithm.initial_tangent ? domain::StiffnessKind::Initial
+                                                                          : domain::StiffnessKind::Current};
+  domain::ElementMatrix ke;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     domain::Element& el = *elements_[e];
-    fixed = fixed && el.linear_terms_fixed();
-    // `algorithm Newton -initial`: the initial stiffness replaces the current tangent (OpenSees INITIAL_TANGENT)
-    // `-elasticTangent` (fem_tcl): the elastic stiffness, the same matrix every step (factored once per dt)
-    ke.noalias() = c1_ * (config_.algorithm.elastic_tangent   ? el.elastic_stiffness()
-                          : config_.algorithm.initial_tangent ? el.initial_stiffness()
-                                                              : el.tangent_stiffness());
-    if (c2_ != 0.0 || c3_ != 0.0) {
-      const domain::RayleighFactors& f = el.rayleigh();
-      if (c2_ != 0.0) {
-        fixed = fixed && f.beta_k == 0.0 && f.beta_kc == 0.0;
-        if (f.beta_k != 0.0) ke.noalias() += (c2_ * f.beta_k) * el.tangent_stiffness();
-        if (f.beta_k0 != 0.0) ke.noalias() += (c2_ * f.beta_k0) * el.initial_stiffness();
-        if (f.beta_kc != 0.0) ke.noalias() += (c2_ * f.beta_kc) * el.committed_tangent();
-      }
-      const double cm = c3_ + c2_ * f.alpha_m;
-      if (cm != 0.0) ke.diagonal() += cm * el.lumped_mass();
-      // rate-dependent materials (zeroLength + Viscous): OpenSees getDamp
-      if (c2_ != 0.0) {
-        if (const Matrix8* c = el.damping_tangent()) ke.noalias() += c2_ * *c;
-      }
-    }
-    const auto& pos = element_pos_[e];
+    el.form_system_matrix(weights, ke);
+    fixed = fixed && el.system_matrix_fixed(weights);
+    const int* pos = element_pos_.data() + element_pos_first_[e];
     const double* k = ke.data();
-    for (int i = 0; i < 64; ++i) {
+    const int entries = static_cast<int>(ke.size());
+    for (int i = 0; i < entries; ++i) {
       if (pos[i] >= 0) values[pos[i]] += k[i];
     }
   }
@@ -207,8 +211,8 @@ void Analysis::form_tangent() {
     for (std::size_t n = 0; n < nodes_.size(); ++n) {
       if (!nodes_[n]->has_mass) continue;
       const double cm = c3_ + c2_ * nodes_[n]->rayleigh_alpha_m;
-      for (int d = 0; d < 2; ++d) {
-        const int q = eq_[2 * n + d];
+      for (int d = 0; d < nodes_[n]->ndf; ++d) {
+        const int q = eq_[first_dof_[n] + d];
         if (q >= 0) values[diag_pos_[q]] += cm * nodes_[n]->mass[d];
       }
     }
@@ -222,14 +226,16 @@ void Analysis::form_tangent() {
   }
   // A free dof that nothing stiffens makes the system singular: name it.
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    for (int d = 0; d < 2; ++d) {
-      const int q = eq_[2 * n + d];
+    for (int d = 0; d < nodes_[n]->ndf; ++d) {
+      const int q = eq_[first_dof_[n] + d];
       if (q >= 0 && values[diag_pos_[q]] == 0.0) {
-        throw common::NumericalError("the system matrix is singular: node " + std::to_string(nodes_[n]->tag) +
-                                     " dof " + std::to_string(d + 1) +
-                                     (c1_ == 0.0 ? " has no mass (an explicit integrator's matrix is the mass: give the "
-                                                   "materials a rho or the node a mass)"
-                                                 : " has no stiffness (unconnected node or missing support)"));
+        throw common::NumericalError(
+            "the system matrix is singular: node " + std::to_string(nodes_[n]->tag) + " dof " + std::to_string(d + 1) +
+            (d == 2 ? " (pore pressure) has no equation (the u-p elements' flow equations are rate equations: run "
+                      "a transient analysis, or fix the dof)"
+             : c1_ == 0.0 ? " has no mass (an explicit integrator's matrix is the mass: give the "
+                            "materials a rho or the node a mass)"
+                          : " has no stiffness (unconnected node or missing support)"));
       }
     }
   }
@@ -242,51 +248,31 @@ void Analysis::form_unbalance() {
   const bool dynamic = config_.transient;
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     const domain::Node& nd = *nodes_[n];
-    for (int d = 0; d < 2; ++d) {
-      const int q = eq_[2 * n + d];
+    for (int d = 0; d < nd.ndf; ++d) {
+      const int q = eq_[first_dof_[n] + d];
       if (q < 0) continue;
       double r = nd.load[d];
       if (dynamic && nd.has_mass) r -= nd.mass[d] * (nd.accel[d] + nd.rayleigh_alpha_m * nd.vel[d]);
       R_[q] += r;
     }
   }
-  Vector8 f;
+  domain::ElementVector f;
   for (std::size_t e = 0; e < elements_.size(); ++e) {
-    if (!forces_current_) element_unbalance(*elements_[e], f);
-    const Vector8& fe = forces_current_ ? element_force_[e] : f;
+    if (!forces_current_) elements_[e]->form_unbalance(config_.transient, f);
+    const domain::ElementVector& fe = forces_current_ ? element_force_[e] : f;
     const auto& ids = element_eq_[e];
-    for (int i = 0; i < 8; ++i) {
-      if (ids[i] >= 0) R_[ids[i]] -= fe[i];
+    for (int i = 0; i < ids.count; ++i) {
+      if (ids.eq[i] >= 0) R_[ids.eq[i]] -= fe[i];
     }
   }
   if (config_.handler == HandlerType::Penalty) {
-    const auto disp = [&](int i) { return nodes_[i / 2]->disp[i % 2]; };
+    const auto disp = [&](int i) { return nodes_[dof_node_[i]]->disp[i - first_dof_[dof_node_[i]]]; };
     for (const auto& p : prescribed_) R_[eq_[p.dof]] += config_.penalty_sp * (prescribed_value(p) - disp(p.dof));
     for (const auto& pp : penalty_pairs_) {
       const double gap = config_.penalty_mp * (disp(pp.constrained) - disp(pp.retained));
       R_[eq_[pp.retained]] += gap;
       R_[eq_[pp.constrained]] -= gap;
     }
-  }
-}
-
-void Analysis::element_unbalance(domain::Element& el, Vector8& f) const {
-  f.noalias() = el.resisting_force();
-  if (!config_.transient) return;
-  const Vector8& m = el.lumped_mass();
-  Vector8 a = Vector8::Zero(), v;
-  for (int i = 0; i < el.num_nodes(); ++i) {
-    a[2 * i] = el.nodes()[i]->accel[0];
-    a[2 * i + 1] = el.nodes()[i]->accel[1];
-  }
-  f += m.cwiseProduct(a);
-  const domain::RayleighFactors& rf = el.rayleigh();
-  if (rf.any()) {
-    v = el.trial_velocity();
-    if (rf.alpha_m != 0.0) f += rf.alpha_m * m.cwiseProduct(v);
-    if (rf.beta_k != 0.0) f.noalias() += rf.beta_k * (el.tangent_stiffness() * v);
-    if (rf.beta_k0 != 0.0) f.noalias() += rf.beta_k0 * (el.initial_stiffness() * v);
-    if (rf.beta_kc != 0.0) f.noalias() += rf.beta_kc * (el.committed_tangent() * v);
   }
 }
 
@@ -303,7 +289,7 @@ void Analysis::update_elements() {
   element_force_.resize(elements_.size());
   for (std::size_t e = 0; e < elements_.size(); ++e) {
     elements_[e]->update();
-    element_unbalance(*elements_[e], element_force_[e]);
+    elements_[e]->form_unbalance(true, element_force_[e]);
   }
   forces_current_ = true;
 }
@@ -327,8 +313,14 @@ void Analysis::control_reference() {
   const IntegratorConfig& ic = config_.integrator;
   const std::string where = "integrator DisplacementControl";
   int equation = -2;
-  for (std::size_t n = 0; n < nodes_.size(); ++n)
-    if (nodes_[n]->tag == ic.control_node) equation = eq_[2 * n + static_cast<std::size_t>(ic.control_dof)];
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (nodes_[n]->tag != ic.control_node) continue;
+    if (ic.control_dof >= nodes_[n]->ndf) {
+      throw common::InputError(where, "node " + std::to_string(ic.control_node) + " has no dof " +
+                                          std::to_string(ic.control_dof + 1));
+    }
+    equation = eq_[first_dof_[n] + ic.control_dof];
+  }
   if (equation == -2) throw common::InputError(where, "node " + std::to_string(ic.control_node) + " does not exist");
   if (equation < 0) {
     throw common::InputError(where, "node " + std::to_string(ic.control_node) + " dof " +
@@ -377,9 +369,9 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
     case IntegratorType::LoadControl:
     case IntegratorType::DisplacementControl:
       for (int n = 0; n < nn; ++n) {
-        for (int d = 0; d < 2; ++d) {
-          nodes_[n]->disp[d] += full[2 * n + d];
-          nodes_[n]->incr_disp[d] += full[2 * n + d];
+        for (int d = 0; d < nodes_[n]->ndf; ++d) {
+          nodes_[n]->disp[d] += full[first_dof_[n] + d];
+          nodes_[n]->incr_disp[d] += full[first_dof_[n] + d];
         }
       }
       break;
@@ -390,9 +382,9 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
       Ud_ += c2_ / alpha * full;   // c2_ holds alpha * gamma / (beta dt)
       Udd_ += c3_ * full;
       for (int n = 0; n < nn; ++n) {
-        for (int d = 0; d < 2; ++d) {
-          const int i = 2 * n + d;
-          domain::Node& nd = *nodes_[n];
+        domain::Node& nd = *nodes_[n];
+        for (int d = 0; d < nd.ndf; ++d) {
+          const int i = first_dof_[n] + d;
           if (alpha == 1.0) {
             nd.disp[d] = U_[i];
             nd.vel[d] = Ud_[i];
@@ -410,9 +402,9 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
       // OpenSees CentralDifference::update: velocity by the backward difference c2 (3 U - 4 Ut + Ut-1),
       // acceleration (Udot - Utdot) / dt.
       for (int n = 0; n < nn; ++n) {
-        for (int d = 0; d < 2; ++d) {
-          const int i = 2 * n + d;
-          domain::Node& nd = *nodes_[n];
+        domain::Node& nd = *nodes_[n];
+        for (int d = 0; d < nd.ndf; ++d) {
+          const int i = first_dof_[n] + d;
           nd.disp[d] += full[i];
           nd.incr_disp[d] += full[i];
           nd.vel[d] = c2_ * (3.0 * nd.disp[d] - 4.0 * Ut_[i] + Utm1_[i]);
@@ -425,12 +417,16 @@ void Analysis::apply_increment(const Eigen::VectorXd& full) {
 }
 
 void Analysis::impose_prescribed() {
-  if (prescribed_.empty() || config_.handler == HandlerType::Penalty) return;
+  if ((prescribed_.empty() && tied_to_prescribed_.empty()) || config_.handler == HandlerType::Penalty) return;
   full_.setZero();
   const double t = domain_.time();
   for (const auto& p : prescribed_) {
-    const int n = p.dof / 2, d = p.dof % 2;
+    const int n = dof_node_[p.dof], d = p.dof - first_dof_[n];
     full_[p.dof] = p.pattern->factor(t) * p.value - nodes_[n]->disp[d];
+  }
+  for (const auto& [tied, root] : tied_to_prescribed_) {
+    const int n = dof_node_[tied], r = dof_node_[root];
+    full_[tied] = nodes_[r]->disp[root - first_dof_[r]] + full_[root] - nodes_[n]->disp[tied - first_dof_[n]];
   }
   apply_increment(full_);
 }
@@ -470,8 +466,8 @@ void Analysis::new_step(double dt) {
       c3_ = 1.0 / (b * dt * dt);
       for (int n = 0; n < nn; ++n) {
         domain::Node& nd = *nodes_[n];
-        for (int d = 0; d < 2; ++d) {
-          const int i = 2 * n + d;
+        for (int d = 0; d < nd.ndf; ++d) {
+          const int i = first_dof_[n] + d;
           const double cv = nd.committed_vel[d], ca = nd.committed_accel[d];
           Ut_[i] = nd.committed_disp[d];
           Utd_[i] = cv;
@@ -499,8 +495,8 @@ void Analysis::new_step(double dt) {
         // as OpenSees CentralDifference::domainChanged: U(t - dt) is taken equal to U(t)
         std::cerr << "WARNING: CentralDifference::domainChanged() - assuming Ut-1 = Ut\n";
         for (int n = 0; n < nn; ++n) {
-          for (int d = 0; d < 2; ++d) {
-            const int i = 2 * n + d;
+          for (int d = 0; d < nodes_[n]->ndf; ++d) {
+            const int i = first_dof_[n] + d;
             Ut_[i] = Utm1_[i] = nodes_[n]->committed_disp[d];
             Utd_[i] = nodes_[n]->committed_vel[d];
           }
@@ -511,8 +507,8 @@ void Analysis::new_step(double dt) {
       // (M/dt^2 + C/(2dt)) dU = P(t) - F(U(t)) + M (Ut - Ut-1)/dt^2 - C (Ut - Ut-1)/(2dt).
       for (int n = 0; n < nn; ++n) {
         domain::Node& nd = *nodes_[n];
-        for (int d = 0; d < 2; ++d) {
-          const int i = 2 * n + d;
+        for (int d = 0; d < nd.ndf; ++d) {
+          const int i = first_dof_[n] + d;
           nd.disp[d] = Ut_[i];
           nd.vel[d] = c2_ * (Ut_[i] - Utm1_[i]);
           nd.accel[d] = c3_ * (Utm1_[i] - Ut_[i]);
@@ -534,10 +530,10 @@ void Analysis::commit_step(double dt) {
   const int nn = static_cast<int>(nodes_.size());
   if (ic.type == IntegratorType::HHT && ic.alpha != 1.0) {
     for (int n = 0; n < nn; ++n) {
-      for (int d = 0; d < 2; ++d) {
-        nodes_[n]->disp[d] = U_[2 * n + d];
-        nodes_[n]->vel[d] = Ud_[2 * n + d];
-        nodes_[n]->accel[d] = Udd_[2 * n + d];
+      for (int d = 0; d < nodes_[n]->ndf; ++d) {
+        nodes_[n]->disp[d] = U_[first_dof_[n] + d];
+        nodes_[n]->vel[d] = Ud_[first_dof_[n] + d];
+        nodes_[n]->accel[d] = Udd_[first_dof_[n] + d];
       }
     }
     update_elements();
@@ -545,8 +541,8 @@ void Analysis::commit_step(double dt) {
   if (!ic.is_static()) domain_.set_time(step_start_time_ + dt);
   if (ic.type == IntegratorType::CentralDifference) {
     for (int n = 0; n < nn; ++n) {
-      for (int d = 0; d < 2; ++d) {
-        const int i = 2 * n + d;
+      for (int d = 0; d < nodes_[n]->ndf; ++d) {
+        const int i = first_dof_[n] + d;
         Utm1_[i] = Ut_[i];
         Ut_[i] = nodes_[n]->disp[d];
         Utd_[i] = nodes_[n]->vel[d];

@@ -43,7 +43,8 @@ struct AnalysisStats {
 struct EigenModes {
   std::vector<double> eigenvalues;      ///< lambda = omega^2 (1/s^2), ascending
   std::vector<int> node_tags;           ///< the nodes of the shapes, in tag order
-  std::vector<Eigen::VectorXd> shapes;  ///< per mode: ux, uy of each node; phi^T M phi = 1, 0 at fixed dofs
+  std::vector<int> node_first_dof;      ///< per node of node_tags: its first entry in a shape (ndf entries)
+  std::vector<Eigen::VectorXd> shapes;  ///< per mode: the dofs of each node; phi^T M phi = 1, 0 at fixed dofs
 };
 
 class Analysis final : public StepProblem {
@@ -96,11 +97,11 @@ class Analysis final : public StepProblem {
   /// After a converged try_step: its iterations (LoadControl's Jd) and the step counted, then the commit.
   void commit_converged_step(double dt, int iterations);
   void impose_prescribed();
+  /// The lumped mass of the free equations (elements, then nodal `mass`), summed where dofs share one.
+  Eigen::VectorXd equation_masses() const;
   /// Trial strains of every element from the nodes' trial displacements (vector loop, no map walk); in a
   /// transient analysis each element's unbalance contribution is formed in the same pass (element_force_).
   void update_elements();
-  /// Element e's contribution to the unbalance: f_int + M a (+ the Rayleigh damping forces) when transient.
-  void element_unbalance(domain::Element& el, domain::Vector8& f) const;
 
   domain::Domain& domain_;
   AnalysisConfig config_;
@@ -111,9 +112,22 @@ class Analysis final : public StepProblem {
 
   std::vector<domain::Node*> nodes_;
   std::vector<domain::Element*> elements_;
-  std::vector<int> eq_;                          ///< per node dof (2 per node): equation or -1
-  std::vector<std::array<int, 8>> element_eq_;
-  std::vector<std::array<int, 64>> element_pos_;  ///< value positions in A (or -1)
+  /// The equations of an element's dofs, in its dof order (-1: fixed or not an equation).
+  struct ElementEquations {
+    std::array<int, domain::kMaxElementDofs> eq{};
+    int count = 0;
+  };
+  std::vector<int> first_dof_;                   ///< per node: its first full dof (ndf consecutive); last: total
+  std::vector<int> dof_node_;                    ///< per full dof: the index of its node
+  std::vector<int> eq_;                          ///< per full dof: equation or -1
+  /// equalDOF ties whose retained dof is fixed or prescribed: (constrained, retained) full dofs; the
+  /// constrained one follows the retained one's value when the prescribed values are imposed.
+  std::vector<std::pair<int, int>> tied_to_prescribed_;
+  std::vector<ElementEquations> element_eq_;
+  /// Value positions in A (or -1) of each element matrix entry, column-major, element e's from
+  /// element_pos_first_[e].
+  std::vector<int> element_pos_;
+  std::vector<std::size_t> element_pos_first_;
   std::vector<int> diag_pos_;                    ///< per equation
   std::vector<Prescribed> prescribed_;   ///< eliminated (Plain/Transformation) or penalized (Penalty)
   std::vector<PenaltyPair> penalty_pairs_;
@@ -122,9 +136,9 @@ class Analysis final : public StepProblem {
   int neq_ = 0;
 
   Eigen::VectorXd R_;
-  /// Per element, element_unbalance at the state of the last update_elements (one pass over the elements
+  /// Per element, its form_unbalance at the state of the last update_elements (one pass over the elements
   /// per iteration instead of two); valid while forces_current_.
-  std::vector<domain::Vector8> element_force_;
+  std::vector<domain::ElementVector> element_force_;
   bool forces_current_ = false;
   Eigen::VectorXd full_;  ///< full-dof work vector
   Eigen::VectorXd dx_;

@@ -16,27 +16,23 @@
 
 namespace fem::analysis {
 
-namespace {
 
-/// The lumped mass of the free equations (elements, then nodal `mass`), summed where dofs share one.
-Eigen::VectorXd equation_masses(int neq, const std::vector<domain::Element*>& elements,
-                                const std::vector<std::array<int, 8>>& element_eq, const std::vector<domain::Node*>& nodes,
-                                const std::vector<int>& eq) {
-  Eigen::VectorXd m = Eigen::VectorXd::Zero(neq);
-  for (std::size_t e = 0; e < elements.size(); ++e) {
-    const domain::Vector8& me = elements[e]->lumped_mass();
-    for (int i = 0; i < 8; ++i)
-      if (element_eq[e][i] >= 0) m[element_eq[e][i]] += me[i];
+Eigen::VectorXd Analysis::equation_masses() const {
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(neq_);
+  domain::ElementVector me;
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    elements_[e]->form_lumped_mass(me);
+    const ElementEquations& ids = element_eq_[e];
+    for (int i = 0; i < ids.count; ++i)
+      if (ids.eq[i] >= 0) m[ids.eq[i]] += me[i];
   }
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    if (!nodes[n]->has_mass) continue;
-    for (int d = 0; d < 2; ++d)
-      if (eq[2 * n + d] >= 0) m[eq[2 * n + d]] += nodes[n]->mass[d];
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (!nodes_[n]->has_mass) continue;
+    for (int d = 0; d < nodes_[n]->ndf; ++d)
+      if (eq_[first_dof_[n] + d] >= 0) m[eq_[first_dof_[n] + d]] += nodes_[n]->mass[d];
   }
   return m;
 }
-
-}  // namespace
 
 EigenModes Analysis::eigen_modes(int n) {
   setup();
@@ -61,7 +57,7 @@ EigenModes Analysis::eigen_modes(int n) {
   } restore{*this, algorithm, c1, c2, c3};
   form_tangent();  // assembles and factors K; names a dof without stiffness
 
-  const Eigen::VectorXd m = equation_masses(neq_, elements_, element_eq_, nodes_, eq_);
+  const Eigen::VectorXd m = equation_masses();
   const int massive = static_cast<int>((m.array() > 0.0).count());
   if (n > massive)
     throw common::NumericalError("eigen: " + std::to_string(n) + " modes asked, but only " + std::to_string(massive) +
@@ -108,7 +104,10 @@ EigenModes Analysis::eigen_modes(int n) {
 
   EigenModes modes;
   modes.eigenvalues.assign(lambda_old.data(), lambda_old.data() + n);
-  for (const domain::Node* node : nodes_) modes.node_tags.push_back(node->tag);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    modes.node_tags.push_back(nodes_[i]->tag);
+    modes.node_first_dof.push_back(first_dof_[i]);
+  }
   for (int k = 0; k < n; ++k) {
     Eigen::VectorXd shape = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(eq_.size()));
     for (std::size_t d = 0; d < eq_.size(); ++d)

@@ -86,6 +86,17 @@ bool LinearSolver::values_symmetric() const {
   return true;
 }
 
+bool LinearSolver::diagonal_positive() const {
+  const double* v = A_.valuePtr();
+  for (int col = 0; col < A_.outerSize(); ++col) {
+    const int* begin = A_.innerIndexPtr() + A_.outerIndexPtr()[col];
+    const int* end = A_.innerIndexPtr() + A_.outerIndexPtr()[col + 1];
+    const int* it = std::lower_bound(begin, end, col);
+    if (it == end || *it != col || !(v[it - A_.innerIndexPtr()] > 0.0)) return false;
+  }
+  return true;
+}
+
 bool LinearSolver::try_cholesky() {
   if (!analyzed_llt_) { impl_->llt.analyzePattern(A_); analyzed_llt_ = true; }
   impl_->llt.factorize(A_);
@@ -124,7 +135,9 @@ void LinearSolver::factor() {
   }
   factored_ = false;
   if (kind_ == SolverKind::General) {
-    use_cholesky_ = values_symmetric() && try_cholesky();
+    // a non-positive diagonal rules LL^T out before trying it (u-p systems: the pore-pressure block is
+    // negative definite, the matrix symmetric indefinite)
+    use_cholesky_ = diagonal_positive() && values_symmetric() && try_cholesky();
     if (!use_cholesky_) factor_lu();
   } else {
     use_cholesky_ = true;
@@ -140,7 +153,10 @@ void LinearSolver::factor() {
             "symmetric matrix of its upper triangle, which this SPD system solves as OpenSees does, is not positive "
             "definite; use system UmfPack or BandGeneral");
       throw common::NumericalError(
-          "the system matrix is singular or not positive definite (CHOLMOD); check supports and connectivity");
+          diagonal_positive()
+              ? "the system matrix is singular or not positive definite (CHOLMOD); check supports and connectivity"
+              : "the system matrix has a negative diagonal entry, so it is not positive definite (u-p elements give "
+                "symmetric indefinite systems): use system UmfPack, SparseGeneral, BandGeneral or FullGeneral");
     }
   }
   factored_values_.assign(A_.valuePtr(), A_.valuePtr() + nnz);

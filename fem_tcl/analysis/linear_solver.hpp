@@ -5,8 +5,9 @@
 // `system` name maps onto one of the two (FORMATS.md section 1); the symbolic analysis is reused and the
 // numeric factorization is skipped when the assembled values did not change (e.g. linear elastic steps).
 // A general system whose values are symmetric up to round-off (1e-14 of max|A|) is first offered to
-// CHOLMOD's LL^T (about twice as fast as LU with this machine's reference BLAS); when that fails (not
-// positive definite), UMFPACK factors it. Both are direct solvers: the solutions agree to round-off.
+// CHOLMOD's LL^T (about twice as fast as LU with this machine's reference BLAS) unless a diagonal entry is
+// not positive (a u-p system: symmetric indefinite); when that fails (not positive definite), UMFPACK
+// factors it. Both are direct solvers: the solutions agree to round-off.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -42,6 +43,8 @@ class LinearSolver {
  private:
   struct Impl;
   bool values_symmetric() const;
+  /// Every diagonal entry present and > 0 (necessary for LL^T).
+  bool diagonal_positive() const;
   bool try_cholesky();
   /// SPD systems: the lower triangle set to the transpose of the upper one (OpenSees assembles only that).
   void mirror_upper_triangle();

@@ -39,13 +39,13 @@ class DomainSnapshot {
   double largest_increment() const {
     double m = 0.0;
     std::size_t i = 0;
-    for (const auto& [tag, n] : domain_.nodes()) m = std::max(m, (n->disp - nodes_[i++].committed_disp).norm());
+    for (const auto& [tag, n] : domain_.nodes()) m = std::max(m, (n->solid_disp() - nodes_[i++].committed_disp.head<2>()).norm());
     return m;
   }
   /// Largest |u| of the snapshot (committed displacements).
   double largest_displacement() const {
     double m = 0.0;
-    for (const auto& n : nodes_) m = std::max(m, n.committed_disp.norm());
+    for (const auto& n : nodes_) m = std::max(m, n.committed_disp.head<2>().norm());
     return m;
   }
 

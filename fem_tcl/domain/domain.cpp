@@ -6,10 +6,11 @@
 
 namespace fem::domain {
 
-Node& Domain::add_node(int tag, double x, double y, const std::string& where) {
+Node& Domain::add_node(int tag, double x, double y, int ndf, const std::string& where) {
   if (nodes_.count(tag)) throw common::InputError(where, "node " + std::to_string(tag) + " already exists");
   auto node = std::make_unique<Node>();
   node->tag = tag;
+  node->ndf = ndf;
   node->crd = Vector2(x, y);
   Node& ref = *node;
   nodes_.emplace(tag, std::move(node));
@@ -205,11 +206,12 @@ void Domain::revert_to_start() {
 
 void Domain::compute_reactions() {
   for (auto& [tag, n] : nodes_) n->reaction = -n->load;
+  ElementVector f;
   for (auto& [tag, e] : elements_) {
-    const Vector8& f = e->resisting_force();
+    e->form_resisting_force(f);
+    const int per_node = e->dofs_per_node();
     for (int i = 0; i < e->num_nodes(); ++i) {
-      e->nodes()[i]->reaction[0] += f[2 * i];
-      e->nodes()[i]->reaction[1] += f[2 * i + 1];
+      for (int d = 0; d < per_node; ++d) e->nodes()[i]->reaction[d] += f[per_node * i + d];
     }
   }
 }
@@ -229,10 +231,7 @@ void PlainPattern::apply(Domain& domain, double time) {
   const double f = factor(time);
   last_factor_ = f;
   for (const auto& l : nodal_loads) {
-    if (Node* n = domain.find_node(l.node)) {
-      n->load[0] += f * l.fx;
-      n->load[1] += f * l.fy;
-    }
+    if (Node* n = domain.find_node(l.node)) n->load += f * l.force;
   }
   for (const auto& sw : self_weight) {
     for (int etag : sw.elements) {

@@ -33,7 +33,8 @@ struct MeshQuality {
 class Domain {
  public:
   // --- building (throw common::InputError naming `where` on a duplicate or missing tag) ---
-  Node& add_node(int tag, double x, double y, const std::string& where);
+  /// A node with `ndf` dofs (2, or 3 for u-p elements) at (x, y).
+  Node& add_node(int tag, double x, double y, int ndf, const std::string& where);
   void add_element(std::unique_ptr<Element> element, const std::string& where);
   void add_pattern(std::unique_ptr<LoadPattern> pattern, const std::string& where);
   void add_equal_dof(EqualDof c) { equal_dofs_.push_back(std::move(c)); ++version_; }

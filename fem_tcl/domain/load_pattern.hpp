@@ -4,13 +4,14 @@
 #include <memory>
 #include <vector>
 
+#include "fem_tcl/domain/node.hpp"
 #include "fem_tcl/domain/time_series.hpp"
 
 namespace fem::domain {
 
 class Domain;
 
-struct NodalLoad { int node; double fx; double fy; };
+struct NodalLoad { int node; NodeVector force; };  ///< force per dof (entries past the node's ndf zero)
 struct PrescribedDisp { int node; int dof; double value; };  ///< dof 0-based
 struct SelfWeightLoad { std::vector<int> elements; double xf; double yf; };
 

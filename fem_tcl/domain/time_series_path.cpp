@@ -89,9 +89,12 @@ std::vector<double> read_number_file(common::CommandArgs& args, const std::strin
 std::vector<double> number_list(common::CommandArgs& args, std::string_view what) {
   std::vector<double> out;
   const std::string first = args.word(what);
-  std::istringstream in(first);
-  std::string token;
-  while (in >> token) {
+  const auto tokens = common::CommandArgs::split_list(first);
+  if (!tokens) args.fail("expected a list of numbers for " + std::string(what) + ", got an unmatched brace or quote");
+  for (std::string token : *tokens) {
+    // Tcl_GetDouble takes surrounding white space: a nodeDisp result ("   -0.001") is a number
+    token.erase(0, token.find_first_not_of(" \t\n\r"));
+    token.erase(token.find_last_not_of(" \t\n\r") + 1);
     const auto v = common::CommandArgs::parse_number(token);
     if (!v || !std::isfinite(*v)) args.fail("expected a list of numbers for " + std::string(what) + ", got '" + token + "'");
     out.push_back(*v);

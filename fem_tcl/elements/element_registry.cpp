@@ -3,7 +3,9 @@
 #include <array>
 
 #include "fem_tcl/elements/four_node_quad.hpp"
+#include "fem_tcl/elements/four_node_quad_up.hpp"
 #include "fem_tcl/elements/ssp_quad.hpp"
+#include "fem_tcl/elements/ssp_quad_up.hpp"
 #include "fem_tcl/elements/tri31.hpp"
 #include "fem_tcl/elements/zero_length.hpp"
 
@@ -14,6 +16,14 @@ namespace {
 constexpr std::array kParsers{
     ElementParserEntry{"SSPquad", "element SSPquad tag i j k l matTag PlaneStrain|PlaneStress thick <b1 b2>",
                        parse_ssp_quad},
+    ElementParserEntry{"SSPquadUP",
+                       "element SSPquadUP tag i j k l matTag t fBulk fDen k1 k2 e alpha <b1 b2> <Pup Plow Pleft Pright>",
+                       parse_ssp_quad_up},
+    ElementParserEntry{"SSPQuadUP",
+                       "element SSPQuadUP tag i j k l matTag t fBulk fDen k1 k2 e alpha <b1 b2> <Pup Plow Pleft Pright>",
+                       parse_ssp_quad_up},
+    ElementParserEntry{"quadUP", "element quadUP tag i j k l thick matTag bulk fmass hPerm vPerm <b1 <b2 <t>>>",
+                       parse_four_node_quad_up},
     ElementParserEntry{"quad", "element quad tag i j k l thick PlaneStrain|PlaneStress matTag <p rho b1 b2>",
                        parse_four_node_quad},
     ElementParserEntry{"FourNodeQuad",
@@ -67,6 +77,17 @@ std::array<domain::Node*, 4> ElementBuildContext::quad_nodes(common::CommandArgs
   std::array<domain::Node*, 4> nodes{};
   find_nodes(args, tags, nodes);
   return nodes;
+}
+
+void ElementBuildContext::require_dofs(common::CommandArgs& args, std::span<domain::Node* const> nodes, int ndf) const {
+  for (const domain::Node* n : nodes) {
+    if (n->ndf == ndf) continue;
+    args.fail("node " + std::to_string(n->tag) + " has " + std::to_string(n->ndf) + " dofs (model -ndf " +
+              std::to_string(n->ndf) + "), this element needs " + std::to_string(ndf) +
+              (ndf == 3 ? " (ux, uy, p): build its nodes after 'model basic -ndm 2 -ndf 3'"
+                        : ": a solid element's nodes come from 'model basic -ndm 2 -ndf 2' (a u-p soil uses "
+                          "SSPquadUP or quadUP)"));
+  }
 }
 
 nlohmann::ordered_json continuum_element_json(const domain::Element& element, std::string_view type, double thickness,

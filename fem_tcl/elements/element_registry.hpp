@@ -28,6 +28,9 @@ struct ElementBuildContext {
   void find_nodes(common::CommandArgs& args, std::span<const int> tags, std::span<domain::Node*> nodes) const;
   /// The four nodes; throws for a missing or repeated node tag.
   std::array<domain::Node*, 4> quad_nodes(common::CommandArgs& args, const std::array<int, 4>& tags) const;
+  /// Throws common::InputError naming `args`' command when a node's ndf is not `ndf` (a u-p element needs
+  /// 3-dof nodes, a solid 2-dof ones: OpenSees' setDomain refuses both mixes).
+  void require_dofs(common::CommandArgs& args, std::span<domain::Node* const> nodes, int ndf) const;
 };
 
 /// Builds one element from `element <type> tag ...`; `args` start at the tag. Throws common::InputError.

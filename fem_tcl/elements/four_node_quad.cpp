@@ -5,54 +5,24 @@
 
 namespace fem::elements {
 
-namespace {
-constexpr double kG = 0.5773502691896258;  // 1/sqrt(3)
-constexpr double kPts[4][2] = {{-kG, -kG}, {kG, -kG}, {kG, kG}, {-kG, kG}};
-constexpr double kXi[4] = {-1.0, 1.0, 1.0, -1.0};
-constexpr double kEta[4] = {-1.0, -1.0, 1.0, 1.0};
-}  // namespace
 
 FourNodeQuad::FourNodeQuad(int tag, std::array<domain::Node*, 4> nodes, const materials::NDMaterial& material,
                            materials::PlaneType plane, double thickness, double pressure, double rho, double b1,
                            double b2)
-    : Element(tag, nodes), material_tag_(material.tag()), thickness_(thickness), pressure_(pressure), rho_(rho),
+    : SolidElement(tag, nodes), material_tag_(material.tag()), thickness_(thickness), pressure_(pressure), rho_(rho),
       body_(b1, b2) {
   const std::string where = "element quad " + std::to_string(tag);
   if (!(thickness > 0.0)) throw common::InputError(where, "expected thickness > 0");
   if (pressure != 0.0) throw common::InputError(where, "surface pressure p != 0 is not supported; use nodal loads");
-  for (int g = 0; g < 4; ++g) {
-    materials_[g] = material.copy_for(plane);
-    const double xi = kPts[g][0], eta = kPts[g][1];
-    Eigen::Matrix<double, 2, 4> dNloc;  // d N / d(xi, eta)
-    Eigen::Vector4d N;
-    for (int a = 0; a < 4; ++a) {
-      N[a] = 0.25 * (1.0 + kXi[a] * xi) * (1.0 + kEta[a] * eta);
-      dNloc(0, a) = 0.25 * kXi[a] * (1.0 + kEta[a] * eta);
-      dNloc(1, a) = 0.25 * kEta[a] * (1.0 + kXi[a] * xi);
-    }
-    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();  // J(i, j) = d x_j / d xi_i
-    for (int a = 0; a < 4; ++a) {
-      J(0, 0) += dNloc(0, a) * nodes[a]->crd[0];
-      J(0, 1) += dNloc(0, a) * nodes[a]->crd[1];
-      J(1, 0) += dNloc(1, a) * nodes[a]->crd[0];
-      J(1, 1) += dNloc(1, a) * nodes[a]->crd[1];
-    }
-    const double detJ = J.determinant();
-    if (!(detJ > 0.0)) {
-      throw common::InputError(where, "nodes are collapsed, clockwise or form a non-convex quadrilateral "
-                                      "(detJ <= 0 at a Gauss point; give them counter-clockwise)");
-    }
-    gp_[g].dN = J.inverse() * dNloc;
-    gp_[g].N = N;
-    gp_[g].dvol = detJ * thickness_;  // unit weights
-  }
+  for (int g = 0; g < 4; ++g) materials_[g] = material.copy_for(plane);
+  gp_ = quad_gauss_points(nodes, thickness_, where);
 }
 
 void FourNodeQuad::update() {
   for (int g = 0; g < 4; ++g) {
     materials::Vector3 eps = materials::Vector3::Zero();
     for (int a = 0; a < 4; ++a) {
-      const auto& u = nodes()[a]->disp;
+      const auto u = nodes()[a]->solid_disp();
       eps[0] += gp_[g].dN(0, a) * u[0];
       eps[1] += gp_[g].dN(1, a) * u[1];
       eps[2] += gp_[g].dN(0, a) * u[1] + gp_[g].dN(1, a) * u[0];
@@ -62,19 +32,7 @@ void FourNodeQuad::update() {
 }
 
 Matrix8 FourNodeQuad::stiffness_from(bool initial) {
-  Matrix8 K = Matrix8::Zero();
-  for (int g = 0; g < 4; ++g) {
-    const materials::Matrix3 D = initial ? materials_[g]->initial_tangent() : materials_[g]->tangent();
-    Eigen::Matrix<double, 3, 8> B = Eigen::Matrix<double, 3, 8>::Zero();
-    for (int a = 0; a < 4; ++a) {
-      B(0, 2 * a) = gp_[g].dN(0, a);
-      B(1, 2 * a + 1) = gp_[g].dN(1, a);
-      B(2, 2 * a) = gp_[g].dN(1, a);
-      B(2, 2 * a + 1) = gp_[g].dN(0, a);
-    }
-    K.noalias() += gp_[g].dvol * (B.transpose() * D * B);
-  }
-  return K;
+  return quad_stiffness(gp_, [&](int g) { return initial ? materials_[g]->initial_tangent() : materials_[g]->tangent(); });
 }
 
 const Matrix8& FourNodeQuad::tangent_stiffness() {
@@ -116,7 +74,7 @@ const Vector8& FourNodeQuad::resisting_force() {
       force_[2 * a + 1] -= dv * gp_[g].N[a] * b[1];
     }
   }
-  force_ -= element_load();
+  force_.head(num_dofs()) -= element_load();
   return force_;
 }
 
@@ -199,6 +157,7 @@ std::unique_ptr<domain::Element> parse_four_node_quad(common::CommandArgs& args,
   if (!args.empty()) b2 = args.number("b2");
   args.expect_end();
   const auto nodes = ctx.quad_nodes(args, tags);
+  ctx.require_dofs(args, nodes, 2);
   const auto& material = ctx.material(args, mat);
   return std::make_unique<FourNodeQuad>(tag, nodes, material, plane, thick, p, rho, b1, b2);
 }

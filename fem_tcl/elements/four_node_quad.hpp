@@ -10,6 +10,7 @@
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/elements/element_registry.hpp"
 #include "fem_tcl/elements/material_state.hpp"
+#include "fem_tcl/elements/quad_gauss_points.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
 
 namespace fem::elements {
@@ -17,7 +18,7 @@ namespace fem::elements {
 using domain::Matrix8;
 using domain::Vector8;
 
-class FourNodeQuad final : public domain::Element {
+class FourNodeQuad final : public domain::SolidElement {
  public:
   /// Throws common::InputError when detJ <= 0 at a Gauss point (collapsed or clockwise nodes).
   FourNodeQuad(int tag, std::array<domain::Node*, 4> nodes, const materials::NDMaterial& material,
@@ -49,15 +50,10 @@ class FourNodeQuad final : public domain::Element {
   int material_tag() const override { return material_tag_; }
 
  private:
-  struct GaussPoint {
-    Eigen::Matrix<double, 2, 4> dN;  ///< dN/dx (row 0), dN/dy (row 1)
-    Eigen::Vector4d N;
-    double dvol;  ///< detJ * weight * thickness
-  };
   Matrix8 stiffness_from(bool initial);
 
   std::array<std::unique_ptr<materials::NDMaterial>, 4> materials_;
-  std::array<GaussPoint, 4> gp_;
+  QuadGaussPoints gp_;
   int material_tag_;
   double thickness_;
   double pressure_;

@@ -12,6 +12,7 @@
 #include "fem_tcl/domain/domain.hpp"
 #include "fem_tcl/elements/element_registry.hpp"
 #include "fem_tcl/elements/material_state.hpp"
+#include "fem_tcl/elements/ssp_quad_geometry.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
 
 namespace fem::elements {
@@ -19,7 +20,7 @@ namespace fem::elements {
 using domain::Matrix8;
 using domain::Vector8;
 
-class SSPquad final : public domain::Element {
+class SSPquad final : public domain::SolidElement {
  public:
   /// Throws common::InputError for a collapsed or clockwise element (J0 <= 0).
   SSPquad(int tag, std::array<domain::Node*, 4> nodes, const materials::NDMaterial& material,
@@ -60,24 +61,20 @@ class SSPquad final : public domain::Element {
   const materials::NDMaterial& material() const { return *material_; }
 
  private:
-  void compute_stabilization();
   void refresh_mass();
 
   std::unique_ptr<materials::NDMaterial> material_;
   int material_tag_;
   double thickness_;
   domain::Vector2 body_;
-  double J0_ = 0, J1_ = 0, J2_ = 0;
   // The factors of B0 and Kstab = Mben^T FCF Mben, for the products of every iteration (strain, internal
-  // force) without the dense 3x8 and 8x8 matrices: B0 holds the shape-function gradients dN_ (x, y per
-  // node), Mben the hourglass vector gamma_ in each direction (McGann et al. 2012, eqs. 22 and 33). They
+  // force) without the dense 3x8 and 8x8 matrices: B0 holds the shape-function gradients dN (x, y per
+  // node), Mben the hourglass vector gamma in each direction (McGann et al. 2012, eqs. 22 and 33). They
   // and the other members read every iteration come before the 8x8 matrices (fewer cache lines per element).
-  Eigen::Matrix<double, 4, 2> dN_ = Eigen::Matrix<double, 4, 2>::Zero();
-  Eigen::Vector4d gamma_ = Eigen::Vector4d::Zero();
+  SspQuadGeometry geometry_;
   Eigen::Matrix2d FCF_ = Eigen::Matrix2d::Zero();
   Vector8 mass_ = Vector8::Zero();
   Vector8 force_ = Vector8::Zero();
-  Eigen::Matrix<double, 3, 8> B0_ = Eigen::Matrix<double, 3, 8>::Zero();
   Matrix8 Kstab_ = Matrix8::Zero();
   Matrix8 K_ = Matrix8::Zero();
   Matrix8 Kel_ = Matrix8::Zero();

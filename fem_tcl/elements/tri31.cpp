@@ -12,7 +12,7 @@ constexpr double kWeight = 0.5;
 
 Tri31::Tri31(int tag, std::array<domain::Node*, 3> nodes, const materials::NDMaterial& material,
              materials::PlaneType plane, double thickness, double pressure, double rho, double b1, double b2)
-    : Element(tag, nodes[0], nodes[1], nodes[2]), material_(material.copy_for(plane)),
+    : SolidElement(tag, nodes[0], nodes[1], nodes[2]), material_(material.copy_for(plane)),
       material_tag_(material.tag()), thickness_(thickness), pressure_(pressure), rho_(rho), body_(b1, b2) {
   const std::string where = "element tri31 " + std::to_string(tag);
   if (!(thickness > 0.0)) throw common::InputError(where, "expected thickness > 0");
@@ -45,7 +45,7 @@ Tri31::Tri31(int tag, std::array<domain::Node*, 3> nodes, const materials::NDMat
 void Tri31::update() {
   materials::Vector3 eps = materials::Vector3::Zero();
   for (int a = 0; a < 3; ++a) {
-    const auto& u = nodes()[a]->disp;
+    const auto u = nodes()[a]->solid_disp();
     eps[0] += dN_(0, a) * u[0];
     eps[1] += dN_(1, a) * u[1];
     eps[2] += dN_(0, a) * u[1] + dN_(1, a) * u[0];
@@ -96,7 +96,7 @@ const Vector8& Tri31::resisting_force() {
     force_[2 * a + 1] -= dvol_ * N_[a] * b[1];
   }
   force_ -= pressure_load_;
-  force_ -= element_load();
+  force_.head(num_dofs()) -= element_load();
   return force_;
 }
 
@@ -176,6 +176,7 @@ std::unique_ptr<domain::Element> parse_tri31(common::CommandArgs& args, const El
   args.expect_end();
   std::array<domain::Node*, 3> nodes{};
   ctx.find_nodes(args, tags, nodes);
+  ctx.require_dofs(args, nodes, 2);
   const auto& material = ctx.material(args, mat);
   return std::make_unique<Tri31>(tag, nodes, material, plane, thick, p, rho, b1, b2);
 }

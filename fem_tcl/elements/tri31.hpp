@@ -19,7 +19,7 @@ namespace fem::elements {
 using domain::Matrix8;
 using domain::Vector8;
 
-class Tri31 final : public domain::Element {
+class Tri31 final : public domain::SolidElement {
  public:
   /// Throws common::InputError when detJ <= 0 (collapsed or clockwise nodes).
   Tri31(int tag, std::array<domain::Node*, 3> nodes, const materials::NDMaterial& material,

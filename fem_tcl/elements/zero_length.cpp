@@ -10,7 +10,7 @@ namespace fem::elements {
 ZeroLength::ZeroLength(int tag, domain::Node* i, domain::Node* j,
                        std::vector<std::unique_ptr<materials::UniaxialMaterial>> mats, std::vector<int> dirs,
                        const Eigen::Vector3d& x_axis, int do_rayleigh)
-    : Element(tag, i, j), mats_(std::move(mats)), dirs_(std::move(dirs)), do_rayleigh_(do_rayleigh) {
+    : SolidElement(tag, i, j), mats_(std::move(mats)), dirs_(std::move(dirs)), do_rayleigh_(do_rayleigh) {
   // OpenSees ZeroLength::setUp with yp = z cross x (2D): z' = x' cross yp, y' = z' cross x'.
   const Eigen::Vector3d yp(-x_axis[1], x_axis[0], 0.0);
   const Eigen::Vector3d z = x_axis.cross(yp);
@@ -24,8 +24,8 @@ ZeroLength::ZeroLength(int tag, domain::Node* i, domain::Node* j,
   transformation_.row(2) = z.normalized();
   for (int d : dirs_) axis_.emplace_back(transformation_(d, 0), transformation_(d, 1));
   // OpenSees setDomain: the relative state when the element enters the domain is the zero deformation.
-  d0_ = j->disp - i->disp;
-  v0_ = j->vel - i->vel;
+  d0_ = j->solid_disp() - i->solid_disp();
+  v0_ = j->vel.head<2>() - i->vel.head<2>();
   // OpenSees warns (and goes on) when the nodes are not coincident.
   const double length = (j->crd - i->crd).norm();
   const double scale = std::max(i->crd.norm(), j->crd.norm());
@@ -38,8 +38,8 @@ ZeroLength::ZeroLength(int tag, domain::Node* i, domain::Node* j,
 void ZeroLength::update() {
   const domain::Node& ni = *nodes()[0];
   const domain::Node& nj = *nodes()[1];
-  const Eigen::Vector2d du = nj.disp - ni.disp - d0_;
-  const Eigen::Vector2d dv = nj.vel - ni.vel - v0_;
+  const Eigen::Vector2d du = nj.solid_disp() - ni.solid_disp() - d0_;
+  const Eigen::Vector2d dv = nj.vel.head<2>() - ni.vel.head<2>() - v0_;
   for (std::size_t k = 0; k < mats_.size(); ++k) mats_[k]->set_trial_strain(axis_[k].dot(du), axis_[k].dot(dv));
 }
 

@@ -25,7 +25,7 @@ namespace fem::elements {
 using domain::Matrix8;
 using domain::Vector8;
 
-class ZeroLength final : public domain::Element {
+class ZeroLength final : public domain::SolidElement {
  public:
   /// `dirs` 0-based local axes (0 or 1); `x_axis` the -orient x vector. Throws common::InputError for a
   /// singular orientation (x' zero or along z).

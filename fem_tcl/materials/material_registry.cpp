@@ -5,6 +5,9 @@
 #include "fem_tcl/materials/drucker_prager.hpp"
 #include "fem_tcl/materials/elastic_isotropic.hpp"
 #include "fem_tcl/materials/mohr_coulomb.hpp"
+#include "fem_tcl/materials/pm4sand.hpp"
+#include "fem_tcl/materials/pm4silt.hpp"
+#include "fem_tcl/materials/pressure_depend_multi_yield02.hpp"
 #include "fem_tcl/materials/pressure_independ_multi_yield.hpp"
 
 namespace fem::materials {
@@ -16,6 +19,9 @@ constexpr std::array kParsers{
     MaterialParserEntry{"DruckerPrager", parse_drucker_prager},
     MaterialParserEntry{"MohrCoulomb", parse_mohr_coulomb},
     MaterialParserEntry{"PressureIndependMultiYield", parse_pressure_independ_multi_yield},
+    MaterialParserEntry{"PressureDependMultiYield02", parse_pressure_depend_multi_yield02},
+    MaterialParserEntry{"PM4Sand", parse_pm4sand},
+    MaterialParserEntry{"PM4Silt", parse_pm4silt},
 };
 }  // namespace
 

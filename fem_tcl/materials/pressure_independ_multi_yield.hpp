@@ -16,7 +16,9 @@
 // plastic (a Drucker-Prager cone, sin(phi) as for triaxial compression) and G, K scale with
 // ((p' + p_r) / (p_ref + p_r))^pressDependCoe; a negative noYieldSurf gives |n| user points (shear strain,
 // G / Gmax). Stress update as OpenSees' (sub-increments of one surface size, stress correction onto the
-// active surface, Mroz translation, load reversal re-centring the inner surfaces), tangent as OpenSees'.
+// active surface, Mroz translation, load reversal re-centring the inner surfaces: the mechanism shared with
+// PressureDependMultiYield02, fem_tcl/materials/multi_yield_surfaces.hpp, with a cone height of 1: the
+// surfaces are stresses), tangent as OpenSees'.
 //
 // Stages (`updateMaterialStage`): 0 = linear elastic with G and K (after creation), 1 = plastic; at the first
 // plastic step the surfaces are set around the committed (gravity) stress, as OpenSees' elast2Plast does.
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "common/command_args.hpp"
+#include "fem_tcl/materials/multi_yield_surfaces.hpp"
 #include "fem_tcl/materials/nd_material.hpp"
 #include "fem_tcl/materials/reducible_strength.hpp"
 
@@ -81,21 +84,16 @@ class PressureIndependMultiYield final : public NDMaterial, public ReducibleStre
 
   /// One yield surface: centre (deviatoric tensor, sxx syy szz sxy syz sxz), size M (in sqrt(3/2 s:s)),
   /// plastic shear modulus H.
-  struct Surface {
-    Vector6 center = Vector6::Zero();
-    double size = 0;
-    double modulus = 0;
-  };
-  const std::vector<Surface>& surfaces() const { return trial_.surfaces; }
-  int active_surface() const { return trial_.active; }
+  using Surface = multi_yield::YieldSurface;
+  const std::vector<Surface>& surfaces() const { return trial_.surfaces.surfaces(); }
+  int active_surface() const { return trial_.surfaces.active(); }
 
  private:
   /// What one integration point carries between steps (OpenSees' committed / trial members).
   struct State {
     Vector3 strain = Vector3::Zero();  ///< engineering (exx eyy gxy)
     Vector6 stress = Vector6::Zero();  ///< full tensor, tension positive
-    std::vector<Surface> surfaces;     ///< 1-based as OpenSees' (index 0 unused)
-    int active = 0;                    ///< active surface, 0 = inside the first
+    multi_yield::MultiYieldSurfaces surfaces;  ///< 1-based as OpenSees' (index 0 unused), and the active one
     double shear_modulus = 0, bulk_modulus = 0;  ///< scaled with the confinement at the plastic switch
     bool plastic_started = false;      ///< OpenSees' e2p
   };
@@ -104,12 +102,7 @@ class PressureIndependMultiYield final : public NDMaterial, public ReducibleStre
   void start_plastic(State& s) const;                      // elast2Plast
   void place_surfaces(State& s) const;                     // elast2Plast's active-surface search
   void scale_to_confinement(State& s, bool moduli) const;  // paramScaling
-  static void centre_on_stress(State& s);                  // initSurfaceUpdate
   void plastic_update(const Vector6& strain_increment);    // getStress, stage 1
-  void correct_stress(Vector6& dev, bool crossed);         // stressCorrection
-  void scale_onto_surface(Vector6& dev, int k) const;      // deviatorScaling
-  void move_active_surface(const Vector6& dev);            // updateActiveSurface
-  bool crosses_next_surface(const Vector6& dev) const;
   void form_tangent();
 
   PressureIndependMultiYieldParameters defined_;  ///< as given (after OpenSees' corrections)

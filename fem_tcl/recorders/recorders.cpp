@@ -82,7 +82,7 @@ void NodeRecorder::collect(std::vector<double>& row) {
       row.insert(row.end(), dofs_.size(), 0.0);
       continue;
     }
-    const domain::Vector2* v = nullptr;
+    const domain::NodeVector* v = nullptr;
     switch (response_) {
       case NodeResponse::Disp: v = &n->disp; break;
       case NodeResponse::Vel: v = &n->vel; break;
@@ -180,7 +180,7 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     } else if (is_node && args.flag("-dof")) {
       have_dof = true;
       for (int d : read_integers(args)) {
-        if (d < 1 || d > 2) args.fail("expected -dof values 1 or 2, got " + std::to_string(d));
+        if (d < 1 || d > domain::kMaxNodeDofs) args.fail("expected -dof values 1, 2 or 3, got " + std::to_string(d));
         dofs.push_back(d - 1);
       }
     } else if (!is_node && !is_mesh && args.flag("-ele")) {
@@ -229,10 +229,21 @@ std::unique_ptr<domain::Recorder> parse_recorder(common::CommandArgs& args, doma
     else args.fail("unknown node response '" + w + "' (disp, vel, accel, incrDisp, reaction or unbalance)");
     if (response.size() > 1) args.fail("unexpected argument '" + response[1] + "' after the response");
     std::vector<int> nodes;
+    // Every node recorded must have every dof asked for (a -dof 3 on a 2-dof node is an error); without a
+    // selection, the nodes of now are checked (a node added later without the dof records 0).
+    const auto check_dofs = [&](const domain::Node& n) {
+      for (int d : dofs) {
+        if (d >= n.ndf) {
+          args.fail("-dof " + std::to_string(d + 1) + ": node " + std::to_string(n.tag) + " has " +
+                    std::to_string(n.ndf) + " dofs (model -ndf " + std::to_string(n.ndf) + ")");
+        }
+      }
+    };
     for (int t : tags) {
-      domain.node(t, args.command());  // must exist now
+      check_dofs(domain.node(t, args.command()));  // must exist now
       nodes.push_back(t);
     }
+    if (!selected) for (const auto& [tag, n] : domain.nodes()) check_dofs(*n);
     if (!have_dof) {
       std::cerr << "WARNING recorder Node -file " << opt.path
                 << ": no -dof given, so nothing will be written (as OpenSees); add e.g. -dof 1 2\n";

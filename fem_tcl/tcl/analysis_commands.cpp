@@ -256,6 +256,10 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     const int tag = args.integer("pattern tag");
     if (!ctx.domain.remove_pattern(tag)) args.fail("load pattern " + std::to_string(tag) + " does not exist");
     ctx.analysis_dirty = true;
+  } else if (what == "timeSeries") {
+    // OpenSees `remove timeSeries tag`: the tag is free for a new series; a pattern built with it keeps it
+    const int tag = args.integer("timeSeries tag");
+    if (ctx.time_series.erase(tag) == 0) args.fail("timeSeries " + std::to_string(tag) + " does not exist");
   } else if (what == "element" || what == "ele") {
     // OpenSees `remove element tag` (an excavation): gone from the next step on; its nodes stay.
     const int tag = args.integer("element tag");
@@ -272,11 +276,14 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     // (an excavation, a support taken away). Nothing to remove: OpenSees goes on quietly; fem_tcl warns.
     const int node = args.integer("nodeTag");
     const int dof = args.integer("dofTag");
-    if (dof < 1 || dof > 2) args.fail("expected dofTag 1 or 2, got " + std::to_string(dof));
     std::optional<int> pattern;
     if (!args.empty()) pattern = args.integer("patternTag");
     args.expect_end();
     domain::Node& n = ctx.domain.node(node, args.command());
+    if (dof < 1 || dof > n.ndf) {
+      args.fail("expected dofTag 1.." + std::to_string(n.ndf) + " (node " + std::to_string(node) + " has " +
+                std::to_string(n.ndf) + "), got " + std::to_string(dof));
+    }
     bool removed = false;
     if (!pattern) {
       removed = n.fixed[static_cast<std::size_t>(dof - 1)];
@@ -296,7 +303,7 @@ std::string cmd_remove(Context& ctx, common::CommandArgs& args) {
     ctx.analysis_dirty = true;
     return {};
   } else {
-    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern, element, node or sp)");
+    args.fail("unknown object '" + what + "' (recorders, recorder, loadPattern, timeSeries, element, node or sp)");
   }
   args.expect_end();
   return {};

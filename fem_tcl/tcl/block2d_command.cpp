@@ -130,7 +130,7 @@ std::string cmd_block2d(Context& ctx, common::CommandArgs& args) {
                 std::to_string(start_ele) + "-" + std::to_string(start_ele + num_elements - 1) + ")");
     }
   }
-  for (int k = 0; k < num_nodes; ++k) ctx.domain.add_node(start_node + k, coords[k].x(), coords[k].y(), args.command());
+  for (int k = 0; k < num_nodes; ++k) ctx.domain.add_node(start_node + k, coords[k].x(), coords[k].y(), ctx.ndf, args.command());
   for (int j = 0; j < num_y; ++j) {
     for (int i = 0; i < num_x; ++i) {
       const int tag = start_ele + i + j * num_x;

@@ -35,6 +35,7 @@ struct AnalysisChain {
 struct Context {
   Tcl_Interp* interp = nullptr;
   bool model_defined = false;
+  int ndf = 2;  ///< dofs of the nodes the builder makes now (`model -ndf`: 2, or 3 for u-p elements)
   domain::Domain domain;
   std::map<int, std::unique_ptr<materials::NDMaterial>> materials;
   materials::UniaxialMaterialMap uniaxial_materials;

@@ -49,16 +49,17 @@ std::string cmd_node_eigenvector(Context& ctx, common::CommandArgs& args) {
   int dof = 0;
   if (!args.empty()) dof = args.integer("dof");
   args.expect_end();
-  ctx.domain.node(tag, args.command());  // must exist
+  const int ndf = ctx.domain.node(tag, args.command()).ndf;
   const auto& modes = ctx.eigen;
   if (modes.shapes.empty()) args.fail("no eigen analysis yet (run 'eigen numModes' first)");
   if (mode < 1 || mode > static_cast<int>(modes.shapes.size()))
     args.fail("expected mode 1.." + std::to_string(modes.shapes.size()) + ", got " + std::to_string(mode));
-  if (dof < 0 || dof > 2) args.fail("expected dof 1 or 2, got " + std::to_string(dof));
+  if (dof < 0 || dof > ndf) args.fail("expected dof 1.." + std::to_string(ndf) + ", got " + std::to_string(dof));
   const auto it = std::lower_bound(modes.node_tags.begin(), modes.node_tags.end(), tag);
   if (it == modes.node_tags.end() || *it != tag) args.fail("node " + std::to_string(tag) + " was defined after 'eigen'");
-  const double* phi = modes.shapes[static_cast<std::size_t>(mode - 1)].data() + 2 * (it - modes.node_tags.begin());
-  return dof == 0 ? format_values(phi, 2) : format_values(phi + dof - 1, 1);
+  const double* phi =
+      modes.shapes[static_cast<std::size_t>(mode - 1)].data() + modes.node_first_dof[it - modes.node_tags.begin()];
+  return dof == 0 ? format_values(phi, ndf) : format_values(phi + dof - 1, 1);
 }
 
 }  // namespace fem::tcl

@@ -1,5 +1,7 @@
 // Model-building commands: model, node, fix*, equalDOF, mass, nDMaterial, element, timeSeries, pattern,
 // load, sp, eleLoad, rayleigh, setParameter, updateMaterialStage.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -12,7 +14,7 @@ namespace fem::tcl {
 namespace {
 
 void require_model(const Context& ctx, common::CommandArgs& args) {
-  if (!ctx.model_defined) args.fail("no model defined; start the script with 'model basic -ndm 2 -ndf 2'");
+  if (!ctx.model_defined) args.fail("no model defined; start the script with 'model basic -ndm 2 -ndf 2' (or -ndf 3 for u-p)");
 }
 
 std::vector<std::string> remaining_words(common::CommandArgs& args) {
@@ -34,6 +36,14 @@ int fix_flag(common::CommandArgs& args, std::string_view what) {
   const int f = args.integer(what);
   if (f != 0 && f != 1) args.fail("expected " + std::string(what) + " to be 0 or 1, got " + std::to_string(f));
   return f;
+}
+
+/// "m1", "f3": an argument's name with its index (built by append: GCC 12 warns, wrongly, about
+/// "m" + std::to_string(i), -Wrestrict).
+std::string indexed(std::string_view name, std::size_t i) {
+  std::string s(name);
+  s += std::to_string(i);
+  return s;
 }
 
 /// Runs a parser; an error of the constructor it calls (parameters, geometry) gets the usage line too.
@@ -58,6 +68,19 @@ std::string_view material_usage(std::string_view type) {
     return "nDMaterial PressureIndependMultiYield tag nd rho refShearModul refBulkModul cohesi peakShearStra "
            "<frictionAng=0 <refPress=100 <pressDependCoe=0 <noYieldSurf=20 <r1 Gs1 ...>>>>>";
   }
+  if (type == "PressureDependMultiYield02") {
+    return "nDMaterial PressureDependMultiYield02 tag nd rho refShearModul refBulkModul frictionAng peakShearStra "
+           "refPress pressDependCoe PTAng contrac1 contrac3 dilat1 dilat3 <noYieldSurf=20 <r1 Gs1 ...> <contrac2=5 "
+           "dilat2=3 liquefac1=1 liquefac2=0 e=0.6 cs1=0.9 cs2=0.02 cs3=0.7 pa=101 <c=0.1 <Hv=0 Pv=1>>>>>";
+  }
+  if (type == "PM4Sand") {
+    return "nDMaterial PM4Sand tag Dr G0 hpo Den <P_atm h0 emax emin nb nd Ado z_max cz ce phicv nu Cgd Cdr Ckaf Q R m "
+           "Fsed_min p_sedo IntScheme TanType TolF TolR>";
+  }
+  if (type == "PM4Silt") {
+    return "nDMaterial PM4Silt tag S_u Su_Rat G_o h_po Den <Su_factor P_atm nu nG h0 eInit lambda phicv nb_wet nb_dry "
+           "nd Ado ru_max z_max cz ce Cgd Ckaf m_m CG_consol IntScheme TanType TolF TolR>";
+  }
   return "nDMaterial <type> tag ...";
 }
 
@@ -76,9 +99,14 @@ std::string cmd_model(Context& ctx, common::CommandArgs& args) {
   }
   if (ndm != 2) args.fail("fem_tcl builds 2D models only: expected -ndm 2");
   if (ndf == 0) ndf = 3;  // OpenSees' default for ndm = 2
-  if (ndf != 2) args.fail("fem_tcl's elements are 2D solids: expected -ndf 2 (OpenSees' default for -ndm 2 is 3)");
-  ctx.wipe();
-  ctx.time_series.clear();  // re-issuing `model` clears the time series too (FORMATS.md section 1)
+  if (ndf != 2 && ndf != 3) {
+    args.fail("expected -ndf 2 (solids) or 3 (u-p: ux, uy and the pore pressure), got " + std::to_string(ndf));
+  }
+  // OpenSees (myCommands.cpp specifyModelBuilder): a new builder replaces the old one, whose destructor
+  // clears the time series; the domain and the materials stay, so a script can add nodes of another ndf
+  // (a 2-dof block beside a u-p one, tied with equalDOF on dofs 1 2).
+  ctx.time_series.clear();
+  ctx.ndf = ndf;
   ctx.model_defined = true;
   return {};
 }
@@ -88,18 +116,17 @@ std::string cmd_node(Context& ctx, common::CommandArgs& args) {
   const int tag = args.integer("tag");
   const double x = finite(args, "x");
   const double y = finite(args, "y");
-  domain::Vector2 mass = domain::Vector2::Zero();
+  domain::NodeVector mass = domain::NodeVector::Zero();
   bool has_mass = false;
   while (!args.empty()) {
     if (args.flag("-mass")) {
-      mass[0] = finite(args, "m1");
-      mass[1] = finite(args, "m2");
+      for (int d = 0; d < ctx.ndf; ++d) mass[d] = finite(args, indexed("m", d + 1));
       has_mass = true;
     } else {
       args.fail("unexpected argument '" + args.peek() + "'");
     }
   }
-  domain::Node& n = ctx.domain.add_node(tag, x, y, args.command());
+  domain::Node& n = ctx.domain.add_node(tag, x, y, ctx.ndf, args.command());
   n.mass = mass;
   n.has_mass = has_mass;
   return {};
@@ -108,14 +135,22 @@ std::string cmd_node(Context& ctx, common::CommandArgs& args) {
 std::string cmd_fix(Context& ctx, common::CommandArgs& args) {
   require_model(ctx, args);
   const int tag = args.integer("nodeTag");
-  const int f1 = fix_flag(args, "f1"), f2 = fix_flag(args, "f2");
-  args.expect_end();
   domain::Node& n = ctx.domain.node(tag, args.command());
-  if ((f1 && n.fixed[0]) || (f2 && n.fixed[1])) {
-    std::cerr << "WARNING fix " << tag << ": a dof is already fixed; the constraint is kept once\n";
+  // one flag per dof of the node (OpenSees: fewer is an error, more are ignored)
+  const auto ndf = static_cast<std::size_t>(n.ndf);
+  std::array<int, domain::kMaxNodeDofs> flags{};
+  for (std::size_t d = 0; d < ndf; ++d) {
+    if (args.empty()) {
+      args.fail("node " + std::to_string(tag) + " has " + std::to_string(ndf) + " dofs: expected " +
+                std::to_string(ndf) + " fix flags, got " + std::to_string(d));
+    }
+    flags[d] = fix_flag(args, indexed("f", d + 1));
   }
-  n.fixed[0] = n.fixed[0] || f1;
-  n.fixed[1] = n.fixed[1] || f2;
+  args.expect_end();
+  bool again = false;
+  for (std::size_t d = 0; d < ndf; ++d) again = again || (flags[d] && n.fixed[d]);
+  if (again) std::cerr << "WARNING fix " << tag << ": a dof is already fixed; the constraint is kept once\n";
+  for (std::size_t d = 0; d < ndf; ++d) n.fixed[d] = n.fixed[d] || flags[d];
   ctx.domain.touch();
   return {};
 }
@@ -124,15 +159,19 @@ namespace {
 std::string fix_line(Context& ctx, common::CommandArgs& args, int axis) {
   require_model(ctx, args);
   const double coord = args.number(axis == 0 ? "x" : "y");
-  const int f1 = fix_flag(args, "f1"), f2 = fix_flag(args, "f2");
+  // one flag per dof of the model builder (`model -ndf`); a node with fewer dofs takes the first ones
+  std::array<int, domain::kMaxNodeDofs> flags{};
+  for (int d = 0; d < ctx.ndf; ++d) flags[static_cast<std::size_t>(d)] = fix_flag(args, indexed("f", d + 1));
   double tol = 1e-10;
   if (args.flag("-tol")) tol = args.number("-tol value");
   args.expect_end();
   // OpenSees fixX/fixY skip dofs that are already fixed (no duplicate constraint).
   for (const auto& [tag, n] : ctx.domain.nodes()) {
     if (std::abs(n->crd[axis] - coord) <= tol) {
-      n->fixed[0] = n->fixed[0] || f1;
-      n->fixed[1] = n->fixed[1] || f2;
+      for (int d = 0; d < std::min(n->ndf, ctx.ndf); ++d) {
+        const auto k = static_cast<std::size_t>(d);
+        n->fixed[k] = n->fixed[k] || flags[k];
+      }
     }
   }
   ctx.domain.touch();
@@ -149,11 +188,13 @@ std::string cmd_equal_dof(Context& ctx, common::CommandArgs& args) {
   c.retained = args.integer("retainedNode");
   c.constrained = args.integer("constrainedNode");
   if (c.retained == c.constrained) args.fail("retained and constrained node are the same");
-  ctx.domain.node(c.retained, args.command());
-  ctx.domain.node(c.constrained, args.command());
+  const int ndf = std::min(ctx.domain.node(c.retained, args.command()).ndf,
+                           ctx.domain.node(c.constrained, args.command()).ndf);
   while (!args.empty()) {
     const int d = args.integer("dof");
-    if (d < 1 || d > 2) args.fail("expected dof 1 or 2, got " + std::to_string(d));
+    if (d < 1 || d > ndf) {
+      args.fail("expected dof 1.." + std::to_string(ndf) + " (the dofs both nodes have), got " + std::to_string(d));
+    }
     c.dofs.push_back(d - 1);
   }
   if (c.dofs.empty()) args.fail("missing dof");
@@ -164,10 +205,11 @@ std::string cmd_equal_dof(Context& ctx, common::CommandArgs& args) {
 std::string cmd_mass(Context& ctx, common::CommandArgs& args) {
   require_model(ctx, args);
   const int tag = args.integer("nodeTag");
-  const double m1 = finite(args, "m1"), m2 = finite(args, "m2");
-  args.expect_end();
   domain::Node& n = ctx.domain.node(tag, args.command());
-  n.mass = domain::Vector2(m1, m2);
+  domain::NodeVector mass = domain::NodeVector::Zero();
+  for (int d = 0; d < n.ndf; ++d) mass[d] = finite(args, indexed("m", d + 1));
+  args.expect_end();
+  n.mass = mass;
   n.has_mass = true;
   return {};
 }
@@ -273,10 +315,11 @@ std::string cmd_pattern(Context& ctx, common::CommandArgs& args) {
 std::string cmd_load(Context& ctx, common::CommandArgs& args) {
   domain::LoadPattern& p = current_pattern(ctx, args);
   const int tag = args.integer("nodeTag");
-  const double f1 = finite(args, "F1"), f2 = finite(args, "F2");
+  const domain::Node& n = ctx.domain.node(tag, args.command());
+  domain::NodeVector force = domain::NodeVector::Zero();
+  for (int d = 0; d < n.ndf; ++d) force[d] = finite(args, indexed("F", d + 1));
   args.expect_end();
-  ctx.domain.node(tag, args.command());
-  p.nodal_loads.push_back({tag, f1, f2});
+  p.nodal_loads.push_back({tag, force});
   return {};
 }
 
@@ -286,8 +329,11 @@ std::string cmd_sp(Context& ctx, common::CommandArgs& args) {
   const int dof = args.integer("dof");
   const double value = finite(args, "value");
   args.expect_end();
-  if (dof < 1 || dof > 2) args.fail("expected dof 1 or 2, got " + std::to_string(dof));
   const domain::Node& n = ctx.domain.node(tag, args.command());
+  if (dof < 1 || dof > n.ndf) {
+    args.fail("expected dof 1.." + std::to_string(n.ndf) + " (node " + std::to_string(tag) + " has " +
+              std::to_string(n.ndf) + "), got " + std::to_string(dof));
+  }
   if (n.fixed[dof - 1]) args.fail("node " + std::to_string(tag) + " dof " + std::to_string(dof) + " is already fixed");
   p.prescribed.push_back({tag, dof - 1, value});
   ctx.domain.touch();
@@ -338,6 +384,7 @@ std::string cmd_set_parameter(Context& ctx, common::CommandArgs& args) {
   std::vector<domain::Element*> targets;
   bool have_targets = false;
   std::string name;
+  std::optional<int> material_tag;
   while (!args.empty()) {
     if (args.flag("-val")) { value = args.number("-val value"); have_value = true; }
     else if (args.flag("-ele")) {
@@ -348,17 +395,30 @@ std::string cmd_set_parameter(Context& ctx, common::CommandArgs& args) {
       const int a = args.integer("-eleRange start"), b = args.integer("-eleRange end");
       for (const auto& [tag, e] : ctx.domain.elements()) if (tag >= a && tag <= b) targets.push_back(e.get());
     } else {
+      // OpenSees passes the words after the options to the element: the parameter's name, then its
+      // arguments. `material k name` (a quad's Gauss point k) names the parameter last; otherwise a trailing
+      // integer is the material tag the parameter is meant for (PM4Sand, PM4Silt, the multi-yield models:
+      // `setParameter -val 0 -ele 1 FirstCall 1`), and only elements of that material take it.
       name = args.word("parameter name");
-      while (!args.empty()) name = args.word("parameter name");  // the last word names the parameter
+      if (name == "material" || name == "integrPoint") {
+        while (!args.empty()) name = args.word("parameter name");
+      } else if (!args.empty()) {
+        material_tag = args.integer("material tag (after the parameter name)");
+        args.expect_end();
+      }
     }
   }
   if (!have_value) args.fail("missing -val value");
   if (name.empty()) args.fail("missing parameter name (e.g. E, nu, rho, materialState)");
   if (!have_targets) for (const auto& [tag, e] : ctx.domain.elements()) targets.push_back(e.get());
   int accepted = 0;
-  for (domain::Element* e : targets) accepted += e->set_parameter(name, value) ? 1 : 0;
+  for (domain::Element* e : targets) {
+    if (material_tag && e->material_tag() != *material_tag) continue;
+    accepted += e->set_parameter(name, value) ? 1 : 0;
+  }
   if (accepted == 0 && !targets.empty()) {
-    std::cerr << "WARNING setParameter: no element's material has a parameter '" << name << "'\n";
+    std::cerr << "WARNING setParameter: no element" << (material_tag ? " of material " + std::to_string(*material_tag) : "")
+              << " has a parameter '" << name << "'\n";
   }
   return {};
 }

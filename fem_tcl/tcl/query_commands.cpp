@@ -1,4 +1,5 @@
 // Queries (nodeDisp ... getLoadFactor) in OpenSees' "%35.20f" format, record, recorder, print -JSON.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -36,17 +37,21 @@ std::string node_query(Context& ctx, common::CommandArgs& args, NodeQuantity q) 
   if (!args.empty()) dof = args.integer(q == NodeQuantity::Coord ? "dim" : "dof");
   args.expect_end();
   const domain::Node& n = ctx.domain.node(tag, args.command());
-  const domain::Vector2* v = nullptr;
+  const double* v = nullptr;
   switch (q) {
-    case NodeQuantity::Disp: v = &n.disp; break;
-    case NodeQuantity::Vel: v = &n.vel; break;
-    case NodeQuantity::Accel: v = &n.accel; break;
-    case NodeQuantity::Coord: v = &n.crd; break;
-    case NodeQuantity::Reaction: v = &n.reaction; break;
+    case NodeQuantity::Disp: v = n.disp.data(); break;
+    case NodeQuantity::Vel: v = n.vel.data(); break;
+    case NodeQuantity::Accel: v = n.accel.data(); break;
+    case NodeQuantity::Coord: v = n.crd.data(); break;
+    case NodeQuantity::Reaction: v = n.reaction.data(); break;
   }
-  if (dof == 0) return format_values(v->data(), 2);
-  if (dof < 1 || dof > 2) args.fail("expected dof 1 or 2, got " + std::to_string(dof));
-  return format_values(v->data() + dof - 1, 1);
+  const int count = q == NodeQuantity::Coord ? 2 : n.ndf;
+  if (dof == 0) return format_values(v, count);
+  if (dof < 1 || dof > count) {
+    args.fail("expected " + std::string(q == NodeQuantity::Coord ? "dim" : "dof") + " 1.." + std::to_string(count) +
+              " (node " + std::to_string(tag) + " has " + std::to_string(count) + "), got " + std::to_string(dof));
+  }
+  return format_values(v + dof - 1, 1);
 }
 
 }  // namespace
@@ -177,20 +182,22 @@ void write_model_json(Context& ctx, std::ostream& os) {
   for (const auto& [tag, n] : ctx.domain.nodes()) {
     nlohmann::ordered_json j;
     j["name"] = tag;
-    j["ndf"] = 2;
+    j["ndf"] = n->ndf;
     j["crd"] = {n->crd[0], n->crd[1]};
-    if (n->has_mass) j["mass"] = {n->mass[0], n->mass[1]};
+    if (n->has_mass) j["mass"] = std::vector<double>(n->mass.data(), n->mass.data() + n->ndf);
     nodes.push_back(j.dump());
   }
   for (const auto& [tag, e] : ctx.domain.elements()) elements.push_back(e->to_json().dump());
   // Supports (fem_tcl's addition: OpenSees 3.8's print -JSON writes no SP or MP constraints). One entry per
-  // line, dofs 1-based as in the Tcl commands: {"node": n, "fix": [fx, fy]}, {"retained": r, "constrained": c, "dofs": [..]}.
+  // line, dofs 1-based as in the Tcl commands: {"node": n, "fix": [fx, fy <, fp>]} (one flag per dof of the
+  // node), {"retained": r, "constrained": c, "dofs": [..]}.
   std::vector<std::string> fixes, ties;
   for (const auto& [tag, n] : ctx.domain.nodes()) {
-    if (!n->fixed[0] && !n->fixed[1]) continue;
+    if (std::none_of(n->fixed.begin(), n->fixed.begin() + n->ndf, [](bool f) { return f; })) continue;
     nlohmann::ordered_json j;
     j["node"] = tag;
-    j["fix"] = {n->fixed[0] ? 1 : 0, n->fixed[1] ? 1 : 0};
+    j["fix"] = nlohmann::ordered_json::array();
+    for (int d = 0; d < n->ndf; ++d) j["fix"].push_back(n->fixed[static_cast<std::size_t>(d)] ? 1 : 0);
     fixes.push_back(j.dump());
   }
   for (const auto& c : ctx.domain.equal_dofs()) {
@@ -229,22 +236,26 @@ namespace {
 /// OpenSees' text print of a node (Node::Print, flag 0): coordinates, displacements, velocities,
 /// unbalanced load and reaction.
 void print_node(std::ostream& out, const domain::Node& n) {
-  const auto pair = [&](const char* what, const domain::Vector2& v) { out << "\n\t" << what << v[0] << ' ' << v[1]; };
+  const auto values = [&](const char* what, const double* v, int count) {
+    out << "\n\t" << what;
+    for (int d = 0; d < count; ++d) out << (d ? " " : "") << v[d];
+  };
   out << "\n Node: " << n.tag;
-  pair("Coordinates  : ", n.crd);
-  pair("Disps: ", n.disp);
-  pair("Velocities   : ", n.vel);
-  pair("unbalanced Load: ", n.load);
-  pair("Reaction: ", n.reaction);
+  values("Coordinates  : ", n.crd.data(), 2);
+  values("Disps: ", n.disp.data(), n.ndf);
+  values("Velocities   : ", n.vel.data(), n.ndf);
+  values("unbalanced Load: ", n.load.data(), n.ndf);
+  values("Reaction: ", n.reaction.data(), n.ndf);
   out << "\n";
 }
-/// An element: tag, type, nodes and resisting forces (the 2 per node of Element::resisting_force).
+/// An element: tag, type, nodes and resisting forces (its dofs per node of Element::form_resisting_force).
 void print_element(std::ostream& out, domain::Element& e, int tag) {
   out << "\nElement: " << tag << " type: " << e.type_name() << "\n\tConnected Nodes:";
   for (int a = 0; a < e.num_nodes(); ++a) out << ' ' << e.nodes()[a]->tag;
   out << "\n\tResisting force:";
-  const domain::Vector8& f = e.resisting_force();
-  for (int i = 0; i < 2 * e.num_nodes(); ++i) out << ' ' << f[i];
+  domain::ElementVector f;
+  e.form_resisting_force(f);
+  for (int i = 0; i < e.num_dofs(); ++i) out << ' ' << f[i];
   out << "\n";
 }
 /// Tags after -node / -ele (OpenSees' optional `-flag f` is read and ignored: one level of detail here).

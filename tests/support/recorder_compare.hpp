@@ -77,6 +77,53 @@ inline ::testing::AssertionResult compare_recorder_files(const std::filesystem::
   return ::testing::AssertionSuccess();
 }
 
+/// Recorder files compared column by column: same rows and columns, and every value within `fraction` of
+/// its column's largest |reference value| over the whole record, plus 1e-7 S for round-off noise (S the
+/// file's largest |value| outside the time column): the criterion for nonlinear runs whose error is best
+/// judged against each quantity's own range (a shear stress beside a vertical one).
+inline ::testing::AssertionResult compare_recorder_columns(const std::filesystem::path& reference,
+                                                           const std::filesystem::path& output, bool time_column,
+                                                           double fraction, double* worst_fraction = nullptr) {
+  if (!std::filesystem::exists(output)) return ::testing::AssertionFailure() << output << " was not written";
+  const auto ref = read_numeric_table(reference);
+  const auto out = read_numeric_table(output);
+  if (ref.size() != out.size()) {
+    return ::testing::AssertionFailure() << output.filename() << ": " << out.size() << " rows, reference has "
+                                         << ref.size();
+  }
+  std::vector<double> peak;
+  double scale = 0.0;
+  for (const auto& row : ref) {
+    if (peak.size() < row.size()) peak.resize(row.size(), 0.0);
+    for (std::size_t j = time_column ? 1 : 0; j < row.size(); ++j) {
+      peak[j] = std::max(peak[j], std::abs(row[j]));
+      scale = std::max(scale, std::abs(row[j]));
+    }
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    if (ref[i].size() != out[i].size()) {
+      return ::testing::AssertionFailure() << output.filename() << " row " << i + 1 << ": " << out[i].size()
+                                           << " columns, reference has " << ref[i].size();
+    }
+    for (std::size_t j = 0; j < ref[i].size(); ++j) {
+      const double r = ref[i][j], o = out[i][j];
+      const bool time = time_column && j == 0;
+      const double tol = time ? 1e-6 * std::max(std::abs(r), 1.0) : fraction * peak[j] + 1e-7 * scale;
+      if (!std::isfinite(o) || std::abs(r - o) > tol) {
+        std::ostringstream os;
+        os.precision(17);
+        os << output.filename().string() << " row " << i + 1 << " column " << j + 1 << ": " << o << " vs reference "
+           << r << " (allowed " << tol << ", the column's peak " << peak[j] << ")";
+        return ::testing::AssertionFailure() << os.str();
+      }
+      if (!time && peak[j] > 1e-6 * scale) worst = std::max(worst, std::abs(r - o) / peak[j]);  // not noise columns
+    }
+  }
+  if (worst_fraction) *worst_fraction = worst;
+  return ::testing::AssertionSuccess();
+}
+
 inline ::testing::AssertionResult compare_tokens(const std::string& reference, const std::string& output,
                                                  double rel = 1e-9, double abs = 1e-12) {
   std::istringstream rs(reference), os(output);

@@ -176,7 +176,7 @@ TEST(Block2dCommand, ErrorsNameTheBlock) {
   e = error_of(interp, "block2D 2 2 1 1 tri31 \"1.0 PlaneStrain 1\"" + square);
   EXPECT_NE(e.find("element type 'tri31' has 3 nodes; block2D makes 4-node elements"), std::string::npos) << e;
   e = error_of(interp, "block2D 2 2 1 1 bbarQuad \"1.0 PlaneStrain 1\"" + square);
-  EXPECT_NE(e.find("unknown element type 'bbarQuad' (4-node types: SSPquad, quad, FourNodeQuad)"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown element type 'bbarQuad' (4-node types: SSPquad, SSPquadUP, SSPQuadUP, quadUP, quad, FourNodeQuad)"), std::string::npos) << e;
   e = error_of(interp, "block2D 0 2 1 1 quad \"1.0 PlaneStrain 1\"" + square);
   EXPECT_NE(e.find("numX and numY >= 1"), std::string::npos) << e;
   // tags past the int range, and a block too large to build, fail before anything is allocated

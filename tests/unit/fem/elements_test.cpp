@@ -66,7 +66,7 @@ struct QuadFixture {
     const double y[4] = {0.0, 0.3, 1.7, 1.2};
     for (int i = 0; i < 4; ++i) {
       const int k = clockwise ? 3 - i : i;
-      nodes[i] = &domain.add_node(i + 1, x[k], y[k], "test");
+      nodes[i] = &domain.add_node(i + 1, x[k], y[k], 2, "test");
     }
   }
   double area() const {
@@ -124,7 +124,7 @@ TEST(SSPquad, InternalForceIsStiffnessTimesDisplacementAndMassFollowsRho) {
   const double u[8] = {1e-3, -2e-3, 3e-4, 5e-4, -7e-4, 1.1e-3, 2e-4, -9e-4};
   Vector8 uv;
   for (int a = 0; a < 4; ++a) {
-    f.nodes[a]->disp = fem::domain::Vector2(u[2 * a], u[2 * a + 1]);
+    f.nodes[a]->disp.head<2>() = fem::domain::Vector2(u[2 * a], u[2 * a + 1]);
     uv[2 * a] = u[2 * a];
     uv[2 * a + 1] = u[2 * a + 1];
   }
@@ -142,13 +142,13 @@ TEST(SSPquad, MinJacobianFollowsTheDeformedShape) {
   fem::elements::SSPquad e(1, f.nodes, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0);
   const double undeformed = e.response({"minJacobian"})->at(0);
   EXPECT_GT(undeformed, 0.0);
-  f.nodes[2]->disp = fem::domain::Vector2(-3.0, -2.0);  // push node 3 past the diagonal 2-4: inverted corner
+  f.nodes[2]->disp.head<2>() = fem::domain::Vector2(-3.0, -2.0);  // push node 3 past the diagonal 2-4: inverted corner
   EXPECT_LT(e.response({"minJacobian"})->at(0), 0.0);
   f.nodes[2]->disp.setZero();
   // a unit square has det J = 1/4 at every corner
   Domain d;
-  std::array<fem::domain::Node*, 4> sq{&d.add_node(1, 0, 0, "t"), &d.add_node(2, 1, 0, "t"), &d.add_node(3, 1, 1, "t"),
-                                       &d.add_node(4, 0, 1, "t")};
+  std::array<fem::domain::Node*, 4> sq{&d.add_node(1, 0, 0, 2, "t"), &d.add_node(2, 1, 0, 2, "t"), &d.add_node(3, 1, 1, 2, "t"),
+                                       &d.add_node(4, 0, 1, 2, "t")};
   fem::elements::SSPquad unit(2, sq, f.material, PlaneType::PlaneStrain, 1.0, 0.0, 0.0);
   EXPECT_CLOSE(unit.response({"minJacobian"})->at(0), 0.25, 0.0, 1e-15);
 }
@@ -189,7 +189,7 @@ struct TriangleFixture {
     const double x[3] = {0.0, 2.0, 0.5}, y[3] = {0.0, 0.3, 1.5};
     for (int i = 0; i < 3; ++i) {
       const int k = clockwise ? 2 - i : i;
-      nodes[i] = &domain.add_node(i + 1, x[k], y[k], "test");
+      nodes[i] = &domain.add_node(i + 1, x[k], y[k], 2, "test");
     }
   }
   double area() const { return 0.5 * (2.0 * 1.5 - 0.5 * 0.3); }

@@ -235,7 +235,7 @@ analyze 1
 TEST(ZeroLength, OrientationRotatesTheSpringAxes) {
   Interpreter interp;
   interp.eval(std::string(kSpring) + "element zeroLength 1 1 2 -mat 1 2 -dir 1 2 -orient 1 1 0 -1 1 0\n");
-  auto& e = *interp.context().domain.find_element(1);
+  auto& e = dynamic_cast<fem::domain::SolidElement&>(*interp.context().domain.find_element(1));
   const auto& K = e.tangent_stiffness();
   // x' = (1, 1)/sqrt2 with E = 100, y' = (-1, 1)/sqrt2 with E = 400: K_jj = R^T diag(100, 400) R
   EXPECT_CLOSE(K(2, 2), 250.0, 1e-9, 0.0);
@@ -311,14 +311,15 @@ element zeroLength 3 1 2 -mat 1 3 -dir 1 2 -doRayleigh 0
 rayleigh 0.0 0.1 0.0 0.0
 )tcl");
   auto& domain = interp.context().domain;
+  const auto solid = [&](int tag) { return dynamic_cast<fem::domain::SolidElement*>(domain.find_element(tag)); };
   // default 0: no Rayleigh factors, the Viscous damping tangent in C
   EXPECT_FALSE(domain.find_element(1)->rayleigh().any());
-  ASSERT_NE(domain.find_element(1)->damping_tangent(), nullptr);
-  EXPECT_CLOSE((*domain.find_element(1)->damping_tangent())(3, 3), 5.0, 1e-12, 0.0);
+  ASSERT_NE(solid(1)->damping_tangent(), nullptr);
+  EXPECT_CLOSE((*solid(1)->damping_tangent())(3, 3), 5.0, 1e-12, 0.0);
   EXPECT_FALSE(domain.find_element(3)->rayleigh().any());
   // -doRayleigh (1): Rayleigh factors, and (as OpenSees' getDamp) no material damping tangent
   EXPECT_EQ(domain.find_element(2)->rayleigh().beta_k, 0.1);
-  EXPECT_EQ(domain.find_element(2)->damping_tangent(), nullptr);
+  EXPECT_EQ(solid(2)->damping_tangent(), nullptr);
   EXPECT_NE(error_of(interp, "element zeroLength 4 1 2 -mat 1 -dir 1 -doRayleigh 2").find("expected 0 or 1"),
             std::string::npos);
 }

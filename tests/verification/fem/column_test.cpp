@@ -129,7 +129,7 @@ for {set j 0} {$j < $ny} {incr j} {
   EXPECT_CLOSE(mean, exact, 1e-15, 1e-10);
   // A third of each triangle's mass at each of its nodes: the column's mass rho H (width 1 m) in all.
   double mass = 0.0;
-  for (int e = 1; e <= 4 * ny; ++e) mass += interp.context().domain.find_element(e)->lumped_mass().sum() / 2.0;
+  for (int e = 1; e <= 4 * ny; ++e) mass += dynamic_cast<fem::domain::SolidElement&>(*interp.context().domain.find_element(e)).lumped_mass().sum() / 2.0;
   EXPECT_CLOSE(mass, kRho * kH, 1e-12, 0.0);
 }
 

@@ -14,7 +14,8 @@ namespace {
 /// Total energy from the nodal velocities (lumped mass) and the elements' internal forces (no loads).
 double energy(fem::tcl::Interpreter& interp) {
   double kinetic = 0.0, strain = 0.0;
-  for (const auto& [tag, e] : interp.context().domain.elements()) {
+  for (const auto& [tag, element] : interp.context().domain.elements()) {
+    auto* e = dynamic_cast<fem::domain::SolidElement*>(element.get());
     const auto& m = e->lumped_mass();
     const auto& f = e->resisting_force();
     const auto u = e->trial_displacement();

@@ -204,16 +204,17 @@ TEST(SiteResponse, InputEnergyEqualsDashpotWorkPlusColumnEnergy) {
   ASSERT_TRUE(interp.eval_file(script.string(), message)) << message;
   auto& domain = interp.context().domain;
   const auto& base = *domain.find_node(1);
-  auto& dashpot = *domain.find_element(5000);
+  auto& dashpot = dynamic_cast<fem::domain::SolidElement&>(*domain.find_element(5000));
   auto& load = *domain.find_pattern(10);
   const auto column_energy = [&] {
     double kinetic = 0.0, strain = 0.0;
     for (const auto& [tag, e] : domain.elements()) {
       if (!e->is_continuum()) continue;
-      const auto& m = e->lumped_mass();
-      const auto& f = e->resisting_force();
-      const auto u = e->trial_displacement();
-      const auto v = e->trial_velocity();
+      auto& solid = dynamic_cast<fem::domain::SolidElement&>(*e);
+      const auto& m = solid.lumped_mass();
+      const auto& f = solid.resisting_force();
+      const auto u = solid.trial_displacement();
+      const auto v = solid.trial_velocity();
       for (int i = 0; i < 8; ++i) { kinetic += 0.5 * m[i] * v[i] * v[i]; strain += 0.5 * u[i] * f[i]; }
     }
     return kinetic + strain;

@@ -1,0 +1,88 @@
+// Cost of one PM4Silt update (fem_tcl/materials/pm4silt.hpp): set_trial_strain + commit_state at one point, as an
+// analysis step pays it per integration point. Cases as pm4sand_benchmark.cpp, with the golden DSS run's silt
+// (S_u = 0.25 sigma'vc, G_o 500, h_po 4, OpenSees' defaults otherwise): the elastic stage (stage 0); the plastic
+// stage in undrained cyclic simple shear from K0 consolidation at 100 kPa, in strain steps of 5e-6 (the golden
+// run's: one modified-Euler step per update) and of 5e-5 (five 1e-5 sub-increments per update, OpenSees' default
+// scheme 5). Each benchmark iteration replays one cycle of +-0.1 % shear strain from the same consolidated state
+// (a copy of it); figures are per update.
+// Run: build/bin/pm4silt_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+
+#include "fem_tcl/materials/pm4silt.hpp"
+
+namespace {
+
+using fem::materials::PM4Silt;
+using fem::materials::PM4SiltParameters;
+using fem::materials::Vector3;
+
+PM4SiltParameters golden_silt() {
+  PM4SiltParameters p;
+  p.Su = 0.0;
+  p.Su_Rat = 0.25;
+  p.G0 = 500.0;
+  p.hpo = 4.0;
+  p.density = 1.7;
+  return p;
+}
+
+/// K0 consolidation under 100 kPa in stage 0 (exx = 0), then `stage` (1: FirstCall as scripts do).
+PM4Silt consolidated(int stage, Vector3& strain) {
+  PM4Silt m(1, golden_silt());
+  const double G = m.parameters().G0 * m.parameters().P_atm;
+  const double K = 2.0 / 3.0 * (1.0 + m.parameters().nu) / (1.0 - 2.0 * m.parameters().nu) * G;
+  strain = Vector3(0.0, -100.0 / (K + 4.0 / 3.0 * G), 0.0);
+  m.set_trial_strain(strain);
+  m.commit_state();
+  if (stage == 1) {
+    m.update_stage(1);
+    m.set_parameter("FirstCall", 0.0);
+  }
+  return m;
+}
+
+/// One cycle 0 -> +amplitude -> -amplitude -> 0 of shear strain at constant exx, eyy, in steps of `step`.
+std::vector<Vector3> cycle(const Vector3& start, double amplitude, double step) {
+  std::vector<Vector3> path;
+  double g = 0.0;
+  for (double target : {amplitude, -amplitude, 0.0}) {
+    const int n = static_cast<int>(std::round(std::abs(target - g) / step));
+    const double from = g;
+    for (int i = 1; i <= n; ++i) path.push_back(start + Vector3(0.0, 0.0, from + (target - from) * i / n));
+    g = target;
+  }
+  return path;
+}
+
+void run(benchmark::State& state, int stage, double step) {
+  Vector3 start;
+  const PM4Silt initial = consolidated(stage, start);
+  const std::vector<Vector3> path = cycle(start, 1e-3, step);
+  double tau = 0.0;
+  for (auto _ : state) {
+    PM4Silt m = initial;
+    for (const Vector3& e : path) {
+      m.set_trial_strain(e);
+      m.commit_state();
+    }
+    tau = m.stress()[2];
+    benchmark::DoNotOptimize(tau);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(path.size()));
+  state.counters["ns_per_update"] = benchmark::Counter(static_cast<double>(state.iterations() * path.size()),
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_PM4SiltElasticStage(benchmark::State& st) { run(st, 0, 5e-6); }
+void BM_PM4SiltPlasticCyclicShear5e6(benchmark::State& st) { run(st, 1, 5e-6); }
+void BM_PM4SiltPlasticCyclicShear5e5(benchmark::State& st) { run(st, 1, 5e-5); }
+
+}  // namespace
+
+BENCHMARK(BM_PM4SiltElasticStage)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PM4SiltPlasticCyclicShear5e6)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PM4SiltPlasticCyclicShear5e5)->Unit(benchmark::kMicrosecond);
+BENCHMARK_MAIN();
