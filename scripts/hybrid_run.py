@@ -12,6 +12,9 @@ output folder as its FIRST argument and writes there
     stress.out   recorder Element -file [file join $out stress.out] -time -eleRange 1 $nEle stress3D
 and, for a model with applied nodal loads (a surcharge, a footing) that the MPM run must keep carrying,
     loads.out    recorder Node -file [file join $out loads.out] -time -nodeRange 1 $nNodes -dof 1 2 unbalance
+and, for an effective-stress (u-p) model, the pore pressures of its 3-dof nodes in tag order, given to fem2mpm
+as --pore-pressure (r_u, total stresses and the liquefied strength: bridge/README.md),
+    pp.out       recorder Node -file [file join $out pp.out] -time -node {*}$upNodes -dof 3 vel
 with a row at the transfer time T (e.g. `-dT` a divisor of T, or land a step on T). Then
 `fem2mpm ... --time T --duration D` writes the particles and the MPM deck into DIR/mpm, `mpm` runs it,
 and DIR receives what an engineer looks at:
@@ -37,6 +40,14 @@ runaway or energy-growth checks), 1 when a stage fails otherwise. The warnings o
 that look wrong, a time step above the stability limit, particles removed) are repeated on stderr and
 listed in summary.md.
 
+The transfer window: `--transfer 5,10,15,20` runs the FEM once and a transfer and MPM run per time (at most
+--jobs at once), each into DIR/T<t>/ (its mpm/, series.csv, figures and summary.md), and writes into DIR
+    window.csv, window.png   per transfer time: the runout and moving mass at the end, the liquefied depth at
+                             the transfer (the deepest particle with r_u >= fem2mpm's --liquefied threshold
+                             below the ground surface, from the /pore_pressure dataset; empty for a dry model)
+                             and the FEM mesh's smallest corner det J / det J0 at T (near 0: distorting)
+    summary.md               the table and the figure
+
 Example (scripts/examples/slope_on_foundation.tcl):
     scripts/hybrid_run.py scripts/examples/slope_on_foundation.tcl --transfer 0.5 --duration 4 \\
         --out results/slope --units kN --extent -2 62 -1 30 --base-y 0 --left-wall roller --right-wall roller
@@ -55,10 +66,12 @@ PROG = "hybrid_run.py"
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # the driver's own options: name -> takes a value
 DRIVER_OPTIONS = {"--transfer": True, "--duration": True, "--out": True, "--bin": True, "--threads": True,
-                  "--output-every": True, "--moved": True, "--help": False, "-h": False}
+                  "--output-every": True, "--moved": True, "--jobs": True, "--help": False, "-h": False}
 # what the driver writes into DIR (removed first, so a failed run never leaves an older one behind)
 OUTPUTS = ("fem", "mpm", "series.csv", "summary.md", "fem_mesh_T.png", "particles_T.png", "particles_end.png",
-           "runout.png", "energy.png")
+           "runout.png", "energy.png", "window.csv", "window.png")
+# the r_u above which fem2mpm marks a particle liquefied, unless --liquefied says otherwise (its default)
+LIQUEFIED_DEFAULT = 0.7
 SET_BY_DRIVER = ("--model", "--disp", "--vel", "--stress", "--loads", "--time", "--row", "--out")
 
 
@@ -74,7 +87,10 @@ def driver_parser():
                                  usage="%(prog)s MODEL.tcl --transfer T [--duration D] [--out DIR] [options] "
                                        "[fem2mpm options] [-- script arguments]")
     ap.add_argument("model", help="the FEM script (takes its output folder as its first argument)")
-    ap.add_argument("--transfer", type=float, required=True, help="transfer time T, s (a time in the FEM recorders)")
+    ap.add_argument("--transfer", type=transfer_times, required=True,
+                    help="transfer time T, s (a time in the FEM recorders), or several, comma-separated (the "
+                         "transfer window: one FEM run, a transfer and an MPM run per time, window.csv/png)")
+    ap.add_argument("--jobs", type=int, default=1, help="transfers run at once (default 1)")
     ap.add_argument("--duration", type=float, default=5.0, help="MPM time after the transfer, s (default 5)")
     ap.add_argument("--out", default=None, help="output folder (default results/hybrid_<model name>)")
     ap.add_argument("--bin", default=None, help="folder with fem_tcl, fem2mpm, mpm (default build/bin)")
@@ -84,6 +100,17 @@ def driver_parser():
     ap.add_argument("--moved", type=float, default=0.1,
                     help="travel since T above which a particle counts as moving (front_x, moved_mass_fraction), m")
     return ap
+
+
+def transfer_times(text):
+    """`5` or `5,10,15,20`: sorted, distinct, each >= 0."""
+    try:
+        times = sorted({float(w) for w in text.split(",") if w.strip()})
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected a time or comma-separated times in s, got %r" % text)
+    if not times or times[0] < 0 or not all(np.isfinite(times)):
+        raise argparse.ArgumentTypeError("expected times >= 0 s, got %r" % text)
+    return times
 
 
 def split_arguments(argv):
@@ -253,8 +280,8 @@ def repeat_warnings(logfile):
     return found
 
 
-def write_summary(out, args, command, forward, script_args, walls, rows, direction, report, deck, n_nodes, n_elems,
-                  fem_end, paths, warnings):
+def write_summary(out, args, t_transfer, command, forward, script_args, walls, rows, direction, report, deck, n_nodes,
+                  n_elems, fem_end, paths, warnings):
     end = rows[-1]
     lines = ["# hybrid_run: %s" % os.path.basename(args.model), "",
              "`%s`" % " ".join(command), "",
@@ -263,7 +290,7 @@ def write_summary(out, args, command, forward, script_args, walls, rows, directi
              % (os.path.basename(args.model), " ".join(script_args) or "no script arguments", n_nodes, n_elems, fem_end,
                 walls["fem"]),
              "| transfer | `fem2mpm --time %g %s`: %s particles | %.1f |"
-             % (args.transfer, " ".join(forward), report.get("particles", "?"), walls["fem2mpm"]),
+             % (t_transfer, " ".join(forward), report.get("particles", "?"), walls["fem2mpm"]),
              "| MPM | %g s (%d steps of %.3g s, %s) | %.1f |"
              % (args.duration, deck["analysis"]["nsteps"], deck["analysis"]["dt"], deck["analysis"]["mpm_scheme"].upper(),
                 walls["mpm"]), ""]
@@ -301,6 +328,152 @@ def write_summary(out, args, command, forward, script_args, walls, rows, directi
     os.replace(tmp, os.path.join(out, "summary.md"))
 
 
+def liquefied_depth(transfer_file, threshold):
+    """The largest depth below the ground surface of a particle with r_u >= threshold in the transfer file's
+    /pore_pressure dataset (fem2mpm; rows p, sigma'v0, r_u per /table row): the surface is the highest particle
+    of each column one particle spacing wide. None for a dry transfer (no dataset); 0 when none liquefied."""
+    import h5py
+    with h5py.File(transfer_file, "r") as f:
+        if "pore_pressure" not in f:
+            return None
+        ru = np.asarray(f["pore_pressure"])[:, 2]
+        table = f["table"]
+        x, y, vol = table["coord_x"], table["coord_y"], table["volume"]
+    liquefied = ru >= threshold
+    if not np.any(liquefied):
+        return 0.0
+    width = float(np.sqrt(np.median(vol)))
+    column = np.floor(x / width).astype(int)
+    top = {}
+    for c, yy in zip(column, y):
+        top[c] = max(top.get(c, -np.inf), yy)
+    return float(max(top[c] - yy for c, yy in zip(column[liquefied], y[liquefied])))
+
+
+def fem_min_jacobian_ratio(fem_dir, t):
+    """The smallest corner det J / det J(reference) of the FEM mesh at time t (from model.json and disp.out):
+    1 undeformed, <= 0 inverted. None when disp.out has no row at t."""
+    xy, elems = metrics.load_fem_model(fem_dir)
+    u = metrics.fem_displacements_at(fem_dir, t)
+    if u is None:
+        return None
+    cur = xy + u
+    worst = np.inf
+    for e in elems:
+        n = len(e)
+        for a in range(n):
+            b, c = e[(a + 1) % n], e[(a - 1) % n]
+            r1, r2 = xy[b] - xy[e[a]], xy[c] - xy[e[a]]
+            e1, e2 = cur[b] - cur[e[a]], cur[c] - cur[e[a]]
+            ref = r1[0] * r2[1] - r1[1] * r2[0]
+            worst = min(worst, (e1[0] * e2[1] - e1[1] * e2[0]) / ref if ref > 0 else -np.inf)
+    return float(worst)
+
+
+def run_transfer(args, bins, fem_dir, out, t_transfer, command, forward, script_args, fem_wall, fem_end):
+    """fem2mpm at t_transfer into OUT/mpm, mpm, and OUT's series, figures and summary; returns the end row of the
+    series with the transfer's liquefied depth and the FEM mesh quality. Raises pipeline.PipelineError."""
+    mpm_dir = os.path.join(out, "mpm")
+    walls = {"fem": fem_wall}
+    warnings = []
+    fem2mpm_options = list(forward) + ["--duration", repr(args.duration)]
+    print("%s: transfer at t = %g s: fem2mpm %s" % (PROG, t_transfer, " ".join(forward)), flush=True)
+    walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, t_transfer, fem2mpm_options)
+    warnings += repeat_warnings(os.path.join(mpm_dir, "fem2mpm.log"))
+    if not option_given(forward, "--output-steps"):
+        n_out = max(1, int(round(args.duration / (args.output_every or args.duration / 40.0))))
+
+        def set_output(deck):
+            # n_out outputs, the last one at exactly T + D: nsteps - 1 a multiple of output_steps, and dt
+            # (never larger than fem2mpm's) such that nsteps dt = D (file s holds the state at (s + 1) dt)
+            a = deck["analysis"]
+            every = int(np.ceil((a["nsteps"] - 1) / n_out))
+            a["nsteps"] = every * n_out + 1
+            a["dt"] = args.duration / a["nsteps"]
+            deck["post_processing"]["output_steps"] = every
+        deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), set_output)
+    else:
+        deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), lambda d: None)
+    print("%s: MPM from t = %g s: %g s, %d steps" % (PROG, t_transfer, args.duration, deck["analysis"]["nsteps"]),
+          flush=True)
+    try:
+        walls["mpm"] = pipeline.run_mpm(bins, mpm_dir, args.threads)
+    finally:
+        warnings += repeat_warnings(os.path.join(mpm_dir, "mpm.log"))
+    results = pipeline.results_dir(mpm_dir)
+    rows, states, direction = runout_series(results, t_transfer, args.moved)
+    write_series(os.path.join(out, "series.csv"), rows)
+    with open(os.path.join(mpm_dir, "report.json")) as f:
+        report = json.load(f)
+    xy, elems = metrics.load_fem_model(fem_dir)
+    report.setdefault("particles", len(states["T"]["x"]))
+    spacing = float(np.sqrt(np.median(states["T"]["volume"])))
+    paths = figures(out, fem_dir, t_transfer, rows, states, spacing)
+    write_summary(out, args, t_transfer, command, forward, script_args, walls, rows, direction, report, deck, len(xy),
+                  len(elems), fem_end, paths, warnings)
+    threshold = LIQUEFIED_DEFAULT
+    for k, w in enumerate(forward):
+        if w == "--liquefied" and k + 1 < len(forward):
+            threshold = float(forward[k + 1])
+        elif w.startswith("--liquefied="):
+            threshold = float(w.split("=", 1)[1])
+    end = dict(rows[-1])
+    end["transfer"] = t_transfer
+    end["liquefied_depth"] = liquefied_depth(pipeline.resume_file(os.path.join(mpm_dir, "mpm.json"), deck), threshold)
+    end["fem_min_jacobian_ratio"] = fem_min_jacobian_ratio(fem_dir, t_transfer)
+    end["direction"] = direction
+    return end
+
+
+WINDOW_COLUMNS = ("transfer", "runout", "moved_mass_fraction", "liquefied_depth", "fem_min_jacobian_ratio", "front_x",
+                  "time", "max_speed")
+
+
+def write_window(out, ends, args):
+    """window.csv (one row per transfer time) and window.png: runout, moved mass and liquefied depth against the
+    transfer time, with the FEM's smallest det J ratio at that time (the window: liquefied deep enough, the mesh
+    not yet distorted)."""
+    tmp = os.path.join(out, "window.csv.tmp")
+    with open(tmp, "w") as f:
+        f.write(",".join(WINDOW_COLUMNS) + "\n")
+        for e in ends:
+            f.write(",".join("%.9g" % (e[c] if e[c] is not None else float("nan")) for c in WINDOW_COLUMNS) + "\n")
+    os.replace(tmp, os.path.join(out, "window.csv"))
+    plt = plots.pyplot()
+    t = [e["transfer"] for e in ends]
+    fig, axs = plt.subplots(1, 4, figsize=(13, 3.2))
+    panels = (("runout", "runout at the end (m)"), ("moved_mass_fraction", "moving mass fraction"),
+              ("liquefied_depth", "liquefied depth at T (m)"), ("fem_min_jacobian_ratio", "FEM min det J / det J0 at T"))
+    for ax, (key, label) in zip(axs, panels):
+        ax.plot(t, [e[key] if e[key] is not None else np.nan for e in ends], "o-")
+        ax.set_xlabel("transfer time T (s)")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    axs[3].axhline(0.0, color="r", lw=0.8)
+    fig.suptitle("the transfer window of %s (MPM %g s after each T)" % (os.path.basename(args.model), args.duration),
+                 fontsize=9)
+    return plots.save(fig, os.path.join(out, "window.png"))
+
+
+def write_window_summary(out, args, command, ends, png):
+    lines = ["# hybrid_run: the transfer window of %s" % os.path.basename(args.model), "", "`%s`" % " ".join(command), "",
+             "| T (s) | runout (m) | moving mass | liquefied depth at T (m) | FEM min det J ratio at T | run |",
+             "|---|---|---|---|---|---|"]
+    for e in ends:
+        lines.append("| %g | %.3g | %.1f %% | %s | %s | [T%g/summary.md](T%g/summary.md) |" % (
+            e["transfer"], e["runout"], 100 * e["moved_mass_fraction"],
+            "-" if e["liquefied_depth"] is None else "%.2f" % e["liquefied_depth"],
+            "-" if e["fem_min_jacobian_ratio"] is None else "%.3f" % e["fem_min_jacobian_ratio"], e["transfer"],
+            e["transfer"]))
+    lines += ["", "Liquefied: r_u >= the fem2mpm threshold (--liquefied, default %g); a det J ratio near 0 means the "
+                  "FEM mesh was distorting at T (a later transfer carries a distorted state)." % LIQUEFIED_DEFAULT,
+              "", "![window](%s)" % os.path.basename(png)]
+    tmp = os.path.join(out, "summary.md.tmp")
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(tmp, os.path.join(out, "summary.md"))
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     driver_words, forward, script_args = split_arguments(argv)
@@ -310,84 +483,64 @@ def main(argv=None):
         pipeline.die(PROG, "%s: no such FEM script" % args.model)
     if not (args.duration > 0):
         pipeline.die(PROG, "--duration: expected a time > 0 s, got %g" % args.duration)
-    if not (args.transfer >= 0):
-        pipeline.die(PROG, "--transfer: expected a time >= 0 s, got %g" % args.transfer)
-    for name, value in (("--moved", args.moved), ("--output-every", args.output_every), ("--threads", args.threads)):
+    for name, value in (("--moved", args.moved), ("--output-every", args.output_every), ("--threads", args.threads),
+                        ("--jobs", args.jobs)):
         if value is not None and not (value > 0):
             pipeline.die(PROG, "%s: expected a value > 0, got %g" % (name, value))
     if option_given(forward, "--duration") or option_given(forward, "--nsteps"):
         pipeline.die(PROG, "give the MPM time with the driver's --duration")
     name = os.path.splitext(os.path.basename(args.model))[0]
     out = os.path.abspath(args.out or os.path.join(REPO, "results", "hybrid_" + name))
-    fem_dir, mpm_dir = os.path.join(out, "fem"), os.path.join(out, "mpm")
+    fem_dir = os.path.join(out, "fem")
+    window = len(args.transfer) > 1
+    # one transfer: its outputs in OUT; several: each in OUT/T<t>/, the window's in OUT
+    transfer_dirs = [os.path.join(out, "T%g" % t) if window else out for t in args.transfer]
     try:
         bins = pipeline.find_bins(args.bin, REPO)
     except pipeline.PipelineError as e:
         pipeline.die(PROG, str(e))
     os.makedirs(out, exist_ok=True)
-    pipeline.remove_outputs(out, OUTPUTS)
+    pipeline.remove_outputs(out, OUTPUTS + tuple(os.path.basename(d) for d in transfer_dirs if window))
     command = [PROG] + argv
-    walls = {}
-    warnings = []
     stage = "fem2mpm options"
-    fem2mpm_options = list(forward) + ["--duration", repr(args.duration)]
     try:
-        pipeline.check_fem2mpm_options(bins, fem_dir, mpm_dir, args.transfer, fem2mpm_options)
+        pipeline.check_fem2mpm_options(bins, fem_dir, os.path.join(transfer_dirs[0], "mpm"), args.transfer[0],
+                                       list(forward) + ["--duration", repr(args.duration)])
         stage = "FEM"
         print("%s: FEM: fem_tcl %s %s %s" % (PROG, args.model, fem_dir, " ".join(script_args)), flush=True)
-        walls["fem"] = pipeline.run_fem_script(bins, os.path.abspath(args.model), fem_dir, script_args)
+        fem_wall = pipeline.run_fem_script(bins, os.path.abspath(args.model), fem_dir, script_args)
         fem_end = metrics.fem_last_time(fem_dir)
-        if args.transfer > fem_end + 1e-9:
+        if args.transfer[-1] > fem_end + 1e-9:
             pipeline.die(PROG, "--transfer %g: the FEM run recorded only to t = %g s (%s; run the script longer, "
                                "e.g. with its end-time argument after --, such as -- -tend %g for the examples)"
-                         % (args.transfer, fem_end, os.path.join(fem_dir, "disp.out"), args.transfer))
-        stage = "fem2mpm"
-        print("%s: transfer at t = %g s: fem2mpm %s" % (PROG, args.transfer, " ".join(forward)), flush=True)
-        walls["fem2mpm"] = pipeline.run_fem2mpm(bins, fem_dir, mpm_dir, args.transfer, fem2mpm_options)
-        warnings += repeat_warnings(os.path.join(mpm_dir, "fem2mpm.log"))
-        if not option_given(forward, "--output-steps"):
-            n_out = max(1, int(round(args.duration / (args.output_every or args.duration / 40.0))))
-
-            def set_output(deck):
-                # n_out outputs, the last one at exactly T + D: nsteps - 1 a multiple of output_steps, and dt
-                # (never larger than fem2mpm's) such that nsteps dt = D (file s holds the state at (s + 1) dt)
-                a = deck["analysis"]
-                every = int(np.ceil((a["nsteps"] - 1) / n_out))
-                a["nsteps"] = every * n_out + 1
-                a["dt"] = args.duration / a["nsteps"]
-                deck["post_processing"]["output_steps"] = every
-            deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), set_output)
+                         % (args.transfer[-1], fem_end, os.path.join(fem_dir, "disp.out"), args.transfer[-1]))
+        stage = "transfer"
+        jobs = [(t, d) for t, d in zip(args.transfer, transfer_dirs)]
+        if args.jobs > 1 and window:
+            from concurrent.futures import ThreadPoolExecutor  # the work is in fem2mpm and mpm subprocesses
+            with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+                ends = list(pool.map(lambda j: run_transfer(args, bins, fem_dir, j[1], j[0], command, forward,
+                                                            script_args, fem_wall, fem_end), jobs))
         else:
-            deck = pipeline.edit_deck(os.path.join(mpm_dir, "mpm.json"), lambda d: None)
-        stage = "MPM"
-        print("%s: MPM: %g s, %d steps" % (PROG, args.duration, deck["analysis"]["nsteps"]), flush=True)
-        try:
-            walls["mpm"] = pipeline.run_mpm(bins, mpm_dir, args.threads)
-        finally:
-            warnings += repeat_warnings(os.path.join(mpm_dir, "mpm.log"))
-        stage = "post-processing"
-        results = pipeline.results_dir(mpm_dir)
-        rows, states, direction = runout_series(results, args.transfer, args.moved)
-        write_series(os.path.join(out, "series.csv"), rows)
-        with open(os.path.join(mpm_dir, "report.json")) as f:
-            report = json.load(f)
-        xy, elems = metrics.load_fem_model(fem_dir)
-        report.setdefault("particles", len(states["T"]["x"]))
-        spacing = float(np.sqrt(np.median(states["T"]["volume"])))
-        paths = figures(out, fem_dir, args.transfer, rows, states, spacing)
-        write_summary(out, args, command, forward, script_args, walls, rows, direction, report, deck, len(xy),
-                      len(elems), fem_end, paths, warnings)
+            ends = [run_transfer(args, bins, fem_dir, d, t, command, forward, script_args, fem_wall, fem_end)
+                    for t, d in jobs]
+        if window:
+            stage = "window"
+            png = write_window(out, ends, args)
+            write_window_summary(out, args, command, ends, png)
     except pipeline.PipelineError as e:
         print("%s: error: %s: %s" % (PROG, stage, e), file=sys.stderr)
         return e.exit_code()
-    front = ("front x = %.4g m" % rows[-1]["front_x"]) if np.isfinite(rows[-1]["front_x"]) else \
-        "no moving front (no travel above %g m)" % args.moved
-    other = rows[-1].get("other_side")
-    if other and other["share"] >= OTHER_SIDE_SHARE:
-        front += " (and x = %.4g m the other way, %.0f %% of the moving mass)" % (other["front_x"], 100 * other["share"])
-    print("%s: done: runout %.3g m, %s, %.0f %% of the mass moving at t = %g s; %s"
-          % (PROG, rows[-1]["runout"], front, 100 * rows[-1]["moved_mass_fraction"], rows[-1]["time"],
-             os.path.join(out, "summary.md")), flush=True)
+    for e in ends:
+        front = ("front x = %.4g m" % e["front_x"]) if np.isfinite(e["front_x"]) else \
+            "no moving front (no travel above %g m)" % args.moved
+        other = e.get("other_side")
+        if other and other["share"] >= OTHER_SIDE_SHARE:
+            front += " (and x = %.4g m the other way, %.0f %% of the moving mass)" % (other["front_x"], 100 * other["share"])
+        liq = "" if e["liquefied_depth"] is None else "; liquefied to %.2f m at the transfer" % e["liquefied_depth"]
+        print("%s: done: T = %g s: runout %.3g m, %s, %.0f %% of the mass moving at t = %g s%s"
+              % (PROG, e["transfer"], e["runout"], front, 100 * e["moved_mass_fraction"], e["time"], liq), flush=True)
+    print("%s: %s" % (PROG, os.path.join(out, "summary.md")), flush=True)
     return 0
 
 

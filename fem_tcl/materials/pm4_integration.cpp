@@ -107,7 +107,7 @@ void Integrator::elastic_update() {
   const Vector3 dstrain = t_.strain - n_.strain;
   t_.void_ratio = void_ratio_at(t_.strain);
   t_.elastic_strain = n_.elastic_strain + dstrain;
-  if (s_.variant.elastic_stage_recomputes_moduli) model_.elastic_stage_moduli(n_.stress, c_.K, c_.G);
+  model_.elastic_stage_moduli(n_.stress, c_.K, c_.G);
   c_.ce = c_.cep = elastic_stiffness(c_.K, c_.G);
   t_.stress = n_.stress + c_.ce * dstrain;
   const double p = mean_stress(t_.stress);

@@ -2,7 +2,7 @@
 // The explicit stress integration the PM4 models share: OpenSees' integrate(), elastic_integrator,
 // explicit_integrator, ForwardEuler, ModifiedEuler, RungeKutta4, MaxStrainInc and Stress_Correction, which PM4Sand.cpp
 // and PM4Silt.cpp (commit 2890cb36) carry as near-identical copies. The models differ in their elastic moduli and
-// state-dependent surfaces (the hooks of pm4::Model) and in three details of the driver (pm4::Variant).
+// state-dependent surfaces (the hooks of pm4::Model) and in two details of the driver (pm4::Variant).
 //
 // Conventions as pm4_common.hpp: in-plane tensors (xx, yy, xy), compression positive, stress-like vectors store
 // the tensor shear, strain-like ones the engineering shear.
@@ -64,7 +64,8 @@ enum class Scheme {
 /// handed to integrate()), as OpenSees' member functions do.
 class Model {
  public:
-  /// The moduli of the elastic stage (stage 0) before the update from the committed stress.
+  /// The moduli of the elastic stage (stage 0) at the committed stress, before its update: PM4Sand recomputes
+  /// them, PM4Silt keeps the carried ones (its elastic_integrator calls no GetElasticModuli).
   virtual void elastic_stage_moduli(const Vector3& committed_stress, double& K, double& G) = 0;
   /// The moduli of the plastic stage at `stress` (OpenSees' 5-argument GetElasticModuli); sets the carried
   /// current stress ratio Mcur.
@@ -78,11 +79,8 @@ class Model {
   ~Model() = default;
 };
 
-/// Where PM4Sand.cpp and PM4Silt.cpp differ in the driver itself.
+/// Where PM4Sand.cpp and PM4Silt.cpp differ in the driver itself (besides Model::elastic_stage_moduli).
 struct Variant {
-  /// PM4Sand: the elastic stage's moduli are recomputed from the committed stress (elastic_stage_moduli);
-  /// PM4Silt: the carried ones are used (its elastic_integrator calls no GetElasticModuli).
-  bool elastic_stage_recomputes_moduli = true;
   /// PM4Sand: the plastic stage sets the void ratio of the trial strain before its elastic check; PM4Silt only
   /// inside the schemes (an elastic trial keeps the last value).
   bool void_ratio_before_elastic_check = true;

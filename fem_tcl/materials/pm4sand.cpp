@@ -378,7 +378,7 @@ pm4::Settings PM4Sand::settings() const {
   s.Mc = Mc_;
   s.p_min = p_min_;
   s.e_init = e_init_;
-  s.variant = pm4::Variant{};  // PM4Sand.cpp: the stage-0 moduli recomputed, the void ratio first, RK4 as is
+  s.variant = pm4::Variant{};  // PM4Sand.cpp: the void ratio first, RK4 as is
   return s;
 }
 

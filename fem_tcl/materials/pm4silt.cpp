@@ -11,8 +11,9 @@
 // Boulanger & Ziotopoulou (2018), Report UCD/CGM-18/01 ("the manual"), section 2 (model formulation) and
 // section 3 (default parameters); OpenSees' function names are given where the algorithm is OpenSees' own. The
 // explicit stress integration is PM4Sand's (pm4_integration.cpp, with PM4Sand's quirks 6 to 8 of pm4sand.cpp);
-// PM4Silt.cpp's three departures from it are pm4::Variant's. OpenSees' behaviour is kept where it departs from
-// the manual or looks accidental, because scripts must give OpenSees' numbers:
+// PM4Silt.cpp's three departures from it are quirks 4, 6 and 7 (pm4::Model::elastic_stage_moduli, pm4::Variant).
+// OpenSees' behaviour is kept where it departs from the manual or looks accidental, because scripts must give
+// OpenSees' numbers:
 //  1. S_u <= 0 takes S_u = Su_Rat sigma'yy of the stress at the first initialisation (FirstCall, reset), the
 //     vertical normal stress, not sigma'vc of a K0 state in general; once set, S_u stays, and a later
 //     initialisation recomputes Su_Rat = S_u / sigma'yy. ru_max, z_max and ce < 0 are derived then from Su_Rat
@@ -43,7 +44,8 @@
 // the defaults; TolF / TolR < 0 mean the defaults 1e-7 / 1e-10 (OpenSees would use the negative value); P_atm < 0
 // means 101.3 (OpenSees uses it and its moduli are not numbers). Refused (OpenSees checks none): G_o, h_po <= 0,
 // Den < 0, S_u <= 0 with Su_Rat <= 0, P_atm = 0, nu > 0.5, phicv outside (0, 60) degrees (M must stay below the
-// bounding ratio at p = 0, 2 sin 60), lambda = 0, nb_dry = 0, z_max = 0, ru_max >= 1 is taken as 0.99 as OpenSees.
+// bounding ratio at p = 0, 2 sin 60), lambda = 0, nb_dry = 0, z_max = 0; and by the commands, Su_factor <= 0,
+// G_o <= 0, nu outside [0, 0.5] (nu = 0.5 is 0.4999, as OpenSees' GetElasticModuli makes it).
 // revert_to_last_commit restores the whole committed state (OpenSees' does nothing); FirstCall resets the trial
 // to the new committed state (OpenSees keeps the trial stress until the next trial). Before the first
 // initialisation p_cs and Gamma are 0 (OpenSees leaves them unset). OpenSees' messages are not printed.
@@ -203,7 +205,7 @@ void PM4Silt::elastic_moduli_plain(const Vector3& stress, double& K, double& G) 
   K = pm4::bulk_modulus(G, params_.nu);
 }
 
-// Quirk 4: the elastic stage keeps the carried moduli (never called: pm4::Variant says so).
+// Quirk 4: the elastic stage keeps the carried moduli (those of the last commit or initialisation).
 void PM4Silt::elastic_stage_moduli(const Vector3& committed_stress, double& K, double& G) {
   (void)committed_stress;
   (void)K;
@@ -402,7 +404,6 @@ pm4::Settings PM4Silt::settings() const {
   s.Mc = Mc_;
   s.p_min = p_min_;
   s.e_init = params_.e_init;
-  s.variant.elastic_stage_recomputes_moduli = false;
   s.variant.void_ratio_before_elastic_check = false;
   s.variant.rk4_floors_negative_denominator = true;
   return s;

@@ -50,6 +50,7 @@ constexpr std::array kCommands{
     CommandEntry{"nodeCoord", "nodeCoord nodeTag <dim>", 1, cmd_node_coord},
     CommandEntry{"eleResponse", "eleResponse eleTag response..", 1, cmd_ele_response},
     CommandEntry{"getNodeTags", "getNodeTags", 0, cmd_get_node_tags},
+    CommandEntry{"getNDF", "getNDF <nodeTag>", 0, cmd_get_ndf},
     CommandEntry{"getEleTags", "getEleTags", 0, cmd_get_ele_tags},
     CommandEntry{"eleNodes", "eleNodes eleTag", 1, cmd_ele_nodes},
     CommandEntry{"reactions", "reactions", 0, cmd_reactions},

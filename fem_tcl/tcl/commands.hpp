@@ -73,6 +73,7 @@ std::string cmd_node_accel(Context&, common::CommandArgs&);
 std::string cmd_node_coord(Context&, common::CommandArgs&);
 std::string cmd_ele_response(Context&, common::CommandArgs&);
 std::string cmd_get_node_tags(Context&, common::CommandArgs&);
+std::string cmd_get_ndf(Context&, common::CommandArgs&);
 std::string cmd_get_ele_tags(Context&, common::CommandArgs&);
 std::string cmd_ele_nodes(Context&, common::CommandArgs&);
 std::string cmd_reactions(Context&, common::CommandArgs&);

@@ -73,6 +73,14 @@ std::string cmd_ele_response(Context& ctx, common::CommandArgs& args) {
   return format_values(values->data(), values->size());
 }
 
+/// OpenSees `getNDF <nodeTag>`: the node's number of dofs, or without a tag the model builder's.
+std::string cmd_get_ndf(Context& ctx, common::CommandArgs& args) {
+  if (args.empty()) return std::to_string(ctx.ndf);
+  const int tag = args.integer("nodeTag");
+  args.expect_end();
+  return std::to_string(ctx.domain.node(tag, args.command()).ndf);
+}
+
 std::string cmd_get_node_tags(Context& ctx, common::CommandArgs& args) {
   args.expect_end();
   std::string out;

@@ -1,16 +1,17 @@
 # Procs the examples share (sourced, not run): tying blocks together, the recorders of the hybrid_run.py
 # contract, and the two stages of a slope analysis (elastic gravity, then the Mohr-Coulomb collapse in time).
 
-# Ties every node to the first node found at the same position (within tol) with `equalDOF first node 1 2`:
-# block2D always makes new nodes, so two blocks that share an edge are joined this way (as in OpenSees).
-# Returns the number of ties.
+# Ties every node to the first node found at the same position (within tol) with `equalDOF first node 1 2`
+# (and 3, the pore pressure, when both are u-p nodes): block2D always makes new nodes, so two blocks that share
+# an edge are joined this way (as in OpenSees). Returns the number of ties.
 proc tie_coincident_nodes {{tol 1e-6}} {
     set first [dict create]
     set ties 0
     foreach n [getNodeTags] {
         set key [format "%.0f,%.0f" [expr {[nodeCoord $n 1] / $tol}] [expr {[nodeCoord $n 2] / $tol}]]
         if {[dict exists $first $key]} {
-            equalDOF [dict get $first $key] $n 1 2
+            set m [dict get $first $key]
+            if {[getNDF $m] == 3 && [getNDF $n] == 3} { equalDOF $m $n 1 2 3 } else { equalDOF $m $n 1 2 }
             incr ties
         } else {
             dict set first $key $n
@@ -20,7 +21,8 @@ proc tie_coincident_nodes {{tol 1e-6}} {
 }
 
 # The files scripts/hybrid_run.py expects in outdir (its contract): model.json, and every drec seconds the
-# nodal displacements and velocities and the full element stresses; plus the mesh quality every step.
+# nodal displacements and velocities, the full element stresses and, for the u-p (3-dof) nodes, the pore
+# pressures (pp.out, tag order); plus the mesh quality every step.
 # soil_elements: the elements with stresses (default all; a model with zeroLength dashpots gives its soil
 # elements, which fem2mpm transfers: their tags must be a contiguous range).
 proc record_for_hybrid {outdir drec {soil_elements {}}} {
@@ -30,6 +32,9 @@ proc record_for_hybrid {outdir drec {soil_elements {}}} {
     recorder Node -file [file join $outdir disp.out] -time -dT $drec -nodeRange [lindex $nodes 0] [lindex $nodes end] -dof 1 2 disp
     recorder Node -file [file join $outdir vel.out] -time -dT $drec -nodeRange [lindex $nodes 0] [lindex $nodes end] -dof 1 2 vel
     recorder Element -file [file join $outdir stress.out] -time -dT $drec -eleRange [lindex $eles 0] [lindex $eles end] stress3D
+    set up {}
+    foreach n $nodes { if {[getNDF $n] == 3} { lappend up $n } }
+    if {[llength $up]} { recorder Node -file [file join $outdir pp.out] -time -dT $drec -node {*}$up -dof 3 vel }
     recorder MeshQuality -file [file join $outdir mesh_quality.out] -time
 }
 

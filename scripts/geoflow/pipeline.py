@@ -122,6 +122,8 @@ def run_fem2mpm(bins, fem_dir, out, t_transfer, options=(), logfile=None):
     cmd = fem2mpm_command(bins, fem_dir, out, t_transfer, options)
     if os.path.exists(os.path.join(fem_dir, "loads.out")):
         cmd += ["--loads", os.path.join(fem_dir, "loads.out")]
+    if os.path.exists(os.path.join(fem_dir, "pp.out")) and "--pore-pressure" not in options:
+        cmd += ["--pore-pressure", os.path.join(fem_dir, "pp.out")]
     parent = os.path.dirname(os.path.abspath(out))
     os.makedirs(parent, exist_ok=True)
     tmp_log = logfile or os.path.join(parent, os.path.basename(out) + "_fem2mpm.log")

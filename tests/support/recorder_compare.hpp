@@ -81,19 +81,30 @@ inline ::testing::AssertionResult compare_recorder_files(const std::filesystem::
 /// its column's largest |reference value| over the whole record, plus 1e-7 S for round-off noise (S the
 /// file's largest |value| outside the time column): the criterion for nonlinear runs whose error is best
 /// judged against each quantity's own range (a shear stress beside a vertical one).
+/// With `rows` > 0 only the first `rows` rows are compared (the files may differ in length after them); the
+/// column peaks are still those of the whole reference record.
 inline ::testing::AssertionResult compare_recorder_columns(const std::filesystem::path& reference,
                                                            const std::filesystem::path& output, bool time_column,
-                                                           double fraction, double* worst_fraction = nullptr) {
+                                                           double fraction, double* worst_fraction = nullptr,
+                                                           std::size_t rows = 0) {
   if (!std::filesystem::exists(output)) return ::testing::AssertionFailure() << output << " was not written";
-  const auto ref = read_numeric_table(reference);
-  const auto out = read_numeric_table(output);
+  const auto full_ref = read_numeric_table(reference);
+  auto out = read_numeric_table(output);
+  auto ref = full_ref;
+  if (rows > 0) {
+    if (out.size() < rows || ref.size() < rows) {
+      return ::testing::AssertionFailure() << output.filename() << ": fewer than the " << rows << " rows compared";
+    }
+    ref.resize(rows);
+    out.resize(rows);
+  }
   if (ref.size() != out.size()) {
     return ::testing::AssertionFailure() << output.filename() << ": " << out.size() << " rows, reference has "
                                          << ref.size();
   }
   std::vector<double> peak;
   double scale = 0.0;
-  for (const auto& row : ref) {
+  for (const auto& row : full_ref) {
     if (peak.size() < row.size()) peak.resize(row.size(), 0.0);
     for (std::size_t j = time_column ? 1 : 0; j < row.size(); ++j) {
       peak[j] = std::max(peak[j], std::abs(row[j]));

@@ -6,7 +6,13 @@
 //   controlled): stress.out, strain.out and disp.out within 1 % of each column's peak over the whole record
 //   (the criterion), and the cycle at which 3 % shear strain is reached (summary.txt) identical.
 //   pp.out is not compared: OpenSees' node 3 pressure grows linearly once the drainage is closed (README
-//   section 4, quirk 1).
+//   section 4, quirk 1). PM4Silt: the files agree to their 6 digits for 170 rows, then the run takes the
+//   other branch of the cycle (3 % strain reached in the same cycle, at -3 % where OpenSees' run reached +3 %,
+//   so the later rows differ in number and sign). Measured with PM4Silt alone along the golden strain path
+//   (tests/regression/fem/pm4silt_dss_test.cpp): from row 171 to 400 the stress sits on the bounding surface
+//   with a zero plastic modulus and the branch the reversal memory takes is set by the last bits of the
+//   strains; OpenSees' own PM4Silt.cpp driven the same way misses the golden sxy by 2.8 %, and perturbing
+//   eyy by 1e-15 relative moves that to 0.6-48 %. So only the first 170 rows can be compared, and the cycle.
 // - up_liquefiable_column (20 SSPquadUP, PM4Sand, shaken 8 s): pp.out within 1 % of each column's peak;
 //   stress.out and disp.out within 3 %. The two runs agree to the files' 6 digits up to t = 0.23 s; the
 //   differences grow while the loose layer liquefies (t = 0.7-1.2 s: 1.6 % of a column's peak, 2.8 % for
@@ -50,22 +56,38 @@ TEST(UpReferenceRuns, TerzaghiConsolidationWithSSPquadUP) {
                                                    scratch.path() / "pp.out", true));
 }
 
-class CyclicSimpleShear : public ::testing::TestWithParam<const char*> {};
+struct ShearCase {
+  const char* name;
+  std::size_t rows;  ///< rows compared (0: all, the same count)
+  bool same_side;    ///< whether 3 % strain is reached on the same side (final_u's sign)
+};
+
+class CyclicSimpleShear : public ::testing::TestWithParam<ShearCase> {};
 
 TEST_P(CyclicSimpleShear, StressesStrainsAndTheCycleOfThreePercentStrain) {
-  const std::string name = GetParam();
+  const ShearCase c = GetParam();
+  const std::string name = c.name;
   test_support::ScratchDir scratch(name);
   run_case(name, scratch);
-  for (const char* file : {"stress.out", "strain.out", "disp.out"}) expect_columns(name, scratch.path(), file, 0.01);
-  // "cycles N stopped_at_strain S final_u U": the same N and S (U is +-3 %, printed at 20 digits)
+  for (const char* file : {"stress.out", "strain.out", "disp.out"}) {
+    double worst = 0.0;
+    EXPECT_TRUE(test_support::compare_recorder_columns(case_dir(name) / "ref" / file, scratch.path() / file, true,
+                                                       c.rows ? 1e-5 : 0.01, &worst, c.rows))
+        << name << "/" << file;
+    std::cout << name << "/" << file << (c.rows ? " (first " + std::to_string(c.rows) + " rows)" : std::string())
+              << ": largest difference " << 100.0 * worst << " % of its column's peak\n";
+  }
+  // "cycles N stopped_at_strain S final_u U": the same N and S; U = +-3 % (printed at 20 digits)
   const std::string ref = test_support::read_text(case_dir(name) / "ref/summary.txt");
   const std::string out = test_support::read_text(scratch.path() / "summary.txt");
   EXPECT_EQ(out.substr(0, out.find(" final_u")), ref.substr(0, ref.find(" final_u")));
-  EXPECT_TRUE(test_support::compare_tokens(ref, out, 1e-12, 1e-15)) << out;
+  if (c.same_side) EXPECT_TRUE(test_support::compare_tokens(ref, out, 1e-12, 1e-15)) << out;
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, CyclicSimpleShear,
-                         ::testing::Values("up_dss_pm4sand", "up_dss_pdmy02", "up_dss_pm4silt"));
+                         ::testing::Values(ShearCase{"up_dss_pm4sand", 0, true}, ShearCase{"up_dss_pdmy02", 0, true},
+                                           ShearCase{"up_dss_pm4silt", 170, false}),
+                         [](const auto& info) { return std::string(info.param.name).substr(7); });
 
 TEST(UpReferenceRuns, ShakenLiquefiableColumn) {
   const std::string name = "up_liquefiable_column";
