@@ -35,7 +35,9 @@
 # whole study (shaken, unshaken, elastic, Newmark): scripts/shaken_slope/study.py, docs/study/shaken_slope.md.
 #
 # Usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1?
-#        ?-plastic 1? ?-motion FILE?
+#        ?-plastic 1? ?-motion FILE? ?-motion-dt 0.01?
+# -motion FILE -motion-dt DT: the outcrop velocity (m/s, one value a line, sample k at t = k DT; default the
+# synthetic record above, DT 0.01 s): the velocity contract of scripts/motion_suite.py.
 # Files in <outdir>: the hybrid_run.py contract (model.json, disp.out, vel.out, stress.out, mesh_quality.out,
 # every -record s) and crest.out (`-time`, every step: ux uy of the left shoulder (28, 14), the crest centre
 # (36, 14) and the right shoulder (44, 14)), crest_accel.out (the same nodes' ux accelerations, absolute:
@@ -43,14 +45,16 @@
 # embankment_accel.out (ax of every embankment node, every step: the sliding mass's mean acceleration for
 # the decoupled Newmark analysis), points.txt (the node tags of those points).
 source [file join [file dirname [info script]] .. examples hybrid_stages.tcl]
-set usage "usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1? ?-plastic 1? ?-motion FILE?"
+set usage "usage: fem_tcl shaken_slope.tcl <outdir> ?-cell 1? ?-tend 12? ?-dt 0.005? ?-record 0.05? ?-scale 1? ?-plastic 1? ?-motion FILE? ?-motion-dt 0.01?"
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} { error "shaken_slope.tcl: missing <outdir>; $usage" }
 set outdir [lindex $argv 0]
 # -scale (>= 0), -plastic (0: the materials stay elastic while shaken, for the decoupled Newmark analysis's
-# seismic coefficient) and -motion (a file) are read here; the numbers > 0 by parse_options
+# seismic coefficient), -motion (a file) and -motion-dt (its sample interval, s) are read here; the numbers > 0
+# by parse_options
 set scale 1.0
 set plastic 1
 set motion [file join [file dirname [info script]] motion vel.txt]
+set motion_dt 0.01
 set rest {}
 foreach {key value} [lrange $argv 1 end] {
     if {$key eq "-scale"} {
@@ -62,10 +66,13 @@ foreach {key value} [lrange $argv 1 end] {
     } elseif {$key eq "-motion"} {
         if {![file readable $value]} { error "shaken_slope.tcl: -motion '$value': no such readable file" }
         set motion $value
+    } elseif {$key eq "-motion-dt"} {
+        if {![string is double -strict $value] || !($value > 0)} { error "shaken_slope.tcl: expected a time > 0 s after '-motion-dt', got '$value'" }
+        set motion_dt $value
     } elseif {$key in {-cell -tend -dt -record}} {
         lappend rest $key $value
     } else {
-        error "shaken_slope.tcl: unknown option '$key' (known: -cell -dt -motion -plastic -record -scale -tend); $usage"
+        error "shaken_slope.tcl: unknown option '$key' (known: -cell -dt -motion -motion-dt -plastic -record -scale -tend); $usage"
     }
 }
 array set opt {-cell 1.0 -tend 12.0 -dt 0.005 -record 0.05}
@@ -124,7 +131,7 @@ node $dummy 0.0 0.0
 fix $dummy 1 1
 uniaxialMaterial Viscous 1 $C 1.0
 element zeroLength [expr {[lindex [lsort -integer [getEleTags]] end] + 1}] $dummy 1 -mat 1 -dir 1
-timeSeries Path 2 -dt 0.01 -filePath $motion -factor $scale -useLast
+timeSeries Path 2 -dt $motion_dt -filePath $motion -factor $scale -useLast
 pattern Plain 2 2 -fact $C { load 1 1.0 0.0 }
 set pi [expr {acos(-1.0)}]
 rayleigh [expr {2.0 * 0.02 * 2.0 * $pi * 2.0}] 0.0 0.0 0.0
