@@ -110,6 +110,8 @@ ExtractedBoundaries extract_boundaries(const FemModel& model) {
   NodeUnion canonical(n);
   std::vector<long> joined, slip, distant;
   for (const auto& t : model.ties) {
+    // A tie of the pore pressure alone (dof 3 of u-p nodes) constrains no motion.
+    if (!std::count(t.dofs.begin(), t.dofs.end(), 1) && !std::count(t.dofs.begin(), t.dofs.end(), 2)) continue;
     const int r = model.node_index(t.retained), c = model.node_index(t.constrained);
     const bool both = std::count(t.dofs.begin(), t.dofs.end(), 1) && std::count(t.dofs.begin(), t.dofs.end(), 2);
     const bool coincident = (crd(r) - crd(c)).norm() <= tol;

@@ -16,9 +16,13 @@
 #include "bridge/deck_boundaries.hpp"
 #include "bridge/fem_model.hpp"
 #include "bridge/fem_state_reader.hpp"
+#include "bridge/liquefaction_report.hpp"
+#include "bridge/liquefied_strength.hpp"
 #include "bridge/mpm_deck.hpp"
 #include "bridge/nodal_loads.hpp"
 #include "bridge/particle_mapping.hpp"
+#include "bridge/pore_pressure.hpp"
+#include "bridge/up_options.hpp"
 #include "bridge/transfer_report.hpp"
 #include "common/atomic_file.hpp"
 #include "common/input_error.hpp"
@@ -57,7 +61,17 @@ struct CliOptions {
   bool quiet = false;
   bool check_options = false;
   bool plane_stress = false;
+  UpOptionText up;  ///< u-p models (up_options.hpp)
 };
+
+/// The u-p options (up_options.hpp); without --pore-pressure every other u-p option is refused.
+std::optional<PorePressureOptions> checked_pore_pressure_options(const UpOptionText& up, const CLI::App& app) {
+  if (up.pore_pressure.empty())
+    for (const char* name : kUpOptionsNeedingPorePressure)
+      if (app.get_option(name)->count() > 0)
+        throw common::InputError(name, "needs --pore-pressure (a u-p model's pore pressure recorder)");
+  return pore_pressure_options(up);
+}
 
 Wall parse_wall(const std::string& s, const char* option) {
   if (s == "roller") return Wall::Roller;
@@ -112,7 +126,7 @@ LoadSummary summarize_loads(const TransferState& state, const std::vector<Partic
 
 void print_report(std::ostream& out, const AssembledState& a, const TransferReport& r, const DeckText& d,
                   const CliOptions& o, const std::vector<BoundaryChoice>& boundaries, const std::filesystem::path& outdir,
-                  const Timing& t, const LoadSummary& loads) {
+                  const Timing& t, const LoadSummary& loads, const std::optional<LiquefactionReport>& up) {
   out << "fem2mpm: FEM state at t = " << fmt(a.state.time, 9) << " s -> " << r.particle_count << " particles ("
       << a.state.elements.size() << " elements x " << o.ppd << "x" << o.ppd
       << (a.triangles_split ? ", " + std::to_string(a.triangles_split) + " of the FEM's triangles as 3 quads each" : std::string())
@@ -146,6 +160,7 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
         << fmt(loads.fem_total.y(), 6) << ") N/m, carried by " << loads.particles << " particles (total ("
         << fmt(loads.particle_total.x(), 6) << ", " << fmt(loads.particle_total.y(), 6)
         << ") N/m) as particle_surface_traction, held at their transfer-time value\n";
+  if (up) out << liquefaction_text(*up);
   out << "  wrote " << (outdir / d.particle_file).string() << " and mpm.json, mesh.txt, entity_sets.json, ";
   for (const auto& f : d.particle_files) out << f.first << ", ";
   out << "report.json in " << outdir.string() << "\n";
@@ -154,8 +169,10 @@ void print_report(std::ostream& out, const AssembledState& a, const TransferRepo
   out << "  run: mpm -f " << outdir.string() << "/ -i mpm.json\n";
 }
 
-int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
+int run(const CliOptions& o, const CLI::App& app, std::ostream& out, std::ostream& err) {
   ReadOptions ro;
+  ro.pore_pressure = checked_pore_pressure_options(o.up, app);
+  const LiquefiedOptions lo = ro.pore_pressure ? liquefied_options(o.up) : LiquefiedOptions{};
   ro.disp = o.disp;
   ro.vel = o.vel;
   ro.loads = o.loads;
@@ -252,17 +269,45 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   timing.read = lap();
   // 2. Map.
   const auto nodal = recover_nodal_stress(state, mo.recovery);
-  const auto particles = generate_particles(state, nodal, mo);
+  auto particles = generate_particles(state, nodal, mo);
   deck.particle_loads = particle_loads(state, mo.particles_per_direction);
+  // u-p: total stress, p / sigma'v0 / r_u per particle, and the liquefied particles' strength; the particles
+  // are then regrouped by material (the deck's one particle file per material), their rows with them.
+  ParticlePorePressure pore;
+  LiquefiedSummary liquefied;
+  std::vector<std::size_t> regrouped;  // empty: the particles are in generate_particles' order
+  if (ro.pore_pressure) {
+    pore = particle_pore_pressure(state, mo);
+    apply_total_stress(particles, pore.rows);
+    liquefied = assign_liquefied_strength(assembled.state, particles, pore.rows, pore.shear_strain, lo);
+    if (!liquefied.materials.empty()) {
+      regrouped = group_by_material(particles);
+      std::vector<mpm::io::PorePressureRecord> rows(regrouped.size());
+      std::vector<std::int64_t> new_id(regrouped.size());
+      for (std::size_t k = 0; k < regrouped.size(); ++k) {
+        rows[k] = pore.rows[regrouped[k]];
+        new_id[regrouped[k]] = static_cast<std::int64_t>(k);
+      }
+      pore.rows = std::move(rows);
+      for (auto& load : deck.particle_loads) load.id = new_id[static_cast<std::size_t>(load.id)];
+    }
+  }
   const LoadSummary load_summary = summarize_loads(state, deck.particle_loads);
   timing.map = lap();
   DeckText d = plan_deck(state, particles, deck);  // the last check that can fail on user input
   // APIC: the particles' affine matrices from the FEM velocity gradient (affine_state.hpp).
   const bool apic = deck.transfer == "apic" && !deck.velocity_update;
-  const std::vector<Matrix2> affine =
-      apic ? apic_matrices(particles, particle_velocity_gradients(state, mo), d.grid) : std::vector<Matrix2>{};
+  std::vector<Matrix2> gradients = apic ? particle_velocity_gradients(state, mo) : std::vector<Matrix2>{};
+  if (apic && !regrouped.empty()) {
+    std::vector<Matrix2> reordered(regrouped.size());
+    for (std::size_t k = 0; k < regrouped.size(); ++k) reordered[k] = gradients[regrouped[k]];
+    gradients = std::move(reordered);
+  }
+  const std::vector<Matrix2> affine = apic ? apic_matrices(particles, gradients, d.grid) : std::vector<Matrix2>{};
   // Warnings only now: a failed run prints its one error line and nothing else.
   std::vector<std::string> warnings = assembled.warnings;
+  warnings.insert(warnings.end(), liquefied.warnings.begin(), liquefied.warnings.end());
+  for (const auto& skipped : model.skipped) assembled.notes.push_back(skipped);
   warnings.insert(warnings.end(), supports.warnings.begin(), supports.warnings.end());
   warnings.insert(warnings.end(), d.warnings.begin(), d.warnings.end());
   for (const auto& w : warnings) err << "fem2mpm: warning: " << w << "\n";
@@ -285,6 +330,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
       mpm::io::write_particle_table(h5_path, particles, [&](std::int64_t file_id) {
         if (apic) mpm::io::write_affine_dataset(file_id, affine, h5_path.string());
         if (deck.base_lag) mpm::io::write_friction_memory_dataset(file_id, {}, h5_path.string());
+        if (ro.pore_pressure) mpm::io::write_pore_pressure_dataset(file_id, pore.rows, h5_path.string());
       });
       h5_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     } catch (...) {
@@ -293,8 +339,16 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
   });
   std::vector<std::unique_ptr<common::AtomicTextFile>> files;
   TransferReport report;
+  std::optional<LiquefactionReport> up;
   try {
     report = make_report(state, nodal, particles);
+    if (ro.pore_pressure) {
+      up = make_liquefaction_report(state, particles, pore.rows, lo.threshold, pore.no_reference, liquefied);
+      up->file = o.up.pore_pressure;
+      up->reference_row = assembled.reference_row;
+      up->reference_how = assembled.reference_how;
+      up->reference_time = assembled.reference_time;
+    }
     format_deck(state, particles, deck, d);
     timing.report_deck = lap();
     nlohmann::ordered_json rj;
@@ -322,6 +376,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
       rj["loads"] = {{"file", o.loads}, {"nodes", load_summary.nodes}, {"particles", load_summary.particles},
                      {"fem_total", {load_summary.fem_total.x(), load_summary.fem_total.y()}},
                      {"particle_total", {load_summary.particle_total.x(), load_summary.particle_total.y()}}};
+    if (up) rj["pore_pressure"] = liquefaction_json(*up);
     if (!d.base_motion.t.empty())
       rj["ground_motion"] = {{"file", o.ground_motion}, {"dir", o.ground_motion_dir}, {"points", d.base_motion.t.size()},
                              {"mpm_time", {d.base_motion.t.front(), d.base_motion.t.back()}}};
@@ -352,7 +407,7 @@ int run(const CliOptions& o, std::ostream& out, std::ostream& err) {
     std::filesystem::remove(h5_path, ec);
     throw;
   }
-  if (!o.quiet) print_report(out, assembled, report, d, o, boundaries, outdir, timing, load_summary);
+  if (!o.quiet) print_report(out, assembled, report, d, o, boundaries, outdir, timing, load_summary, up);
   if (!out.flush()) throw common::OutputError("standard output: writing the report failed (the deck in " + outdir.string() + " is complete)");
   return 0;
 }
@@ -443,6 +498,39 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--ground-motion-dt", o.ground_motion_dt, "time step of the record, s (Path -dt; required with --ground-motion)")->group("Ground motion");
   app.add_option("--ground-motion-factor", o.ground_motion_factor, "factor on the record (Path -factor, e.g. 9.81 for a record in g)")->capture_default_str()->group("Ground motion");
   app.add_option("--ground-motion-dir", o.ground_motion_dir, "direction (UniformExcitation dir): 1 = x, 2 = y")->capture_default_str()->group("Ground motion");
+  // u-p models (issue 36).
+  const char* up_group = "Pore pressure and liquefaction (u-p models; bridge/README.md)";
+  app.add_option("--pore-pressure", o.up.pore_pressure,
+                 "Node recorder file: -time ... -dof 3 vel (the pore pressure of a u-p model, compression positive): the "
+                 "particles get the total stress sigma' - p I and /pore_pressure (p, sigma'v0, r_u) beside /table")->group(up_group);
+  app.add_option("--pp-nodes", o.up.pp_nodes, "node order of --pore-pressure, e.g. '1-35' (default: every 3-dof node in tag order)")->group(up_group);
+  app.add_option("--reference-time", o.up.reference_time,
+                 "time of the reference row (sigma'v0 = -sigma'yy and the hydrostatic p0 there; default: the end of the "
+                 "gravity stage, the last row before the time column restarts lower, e.g. after setTime 0)")->group(up_group);
+  app.add_option("--strain", o.up.strain,
+                 "Element recorder file: -time ... strain (exx eyy gxy per Gauss point, the stress file's element order): the "
+                 "equivalent deviatoric strain since the reference row starts the liquefied particles' softening (default 0)")->group(up_group);
+  app.add_option("--liquefied", o.up.liquefied, "r_u above which a particle is liquefied")->capture_default_str()->group(up_group);
+  app.add_option("--liquefied-table", o.up.liquefied_table,
+                 "the liquefied strength by bins of sigma'v0 (CSV: sigma_v0_upper_kPa,peak_cohesion_kPa,residual_cohesion_kPa,"
+                 "peak_pdstrain,residual_pdstrain; bridge/README.md)")->group(up_group);
+  app.add_option("--residual-ratio", o.up.residual_ratio,
+                 "the liquefied strength Sr = R sigma'v0 (Olson & Stark 2002: R about 0.05 to 0.12)")->group(up_group);
+  app.add_option("--residual-n160cs", o.up.n160cs,
+                 "the liquefied strength from (N1)60cs-Sr per FEM material, MATERIAL:N[,MATERIAL:N...] (Idriss & Boulanger "
+                 "2008)")->group(up_group);
+  app.add_option("--void-redistribution", o.up.void_redistribution,
+                 "with --residual-n160cs: significant (the lower Idriss & Boulanger curve) or negligible")
+      ->capture_default_str()->group(up_group);
+  app.add_option("--liquefied-softening", o.up.liquefied_softening,
+                 "K E1 E2: with --residual-ratio or --residual-n160cs, the peak cohesion K Sr softens to Sr between plastic "
+                 "deviatoric strains E1 and E2 (default: no softening)")->expected(3)->group(up_group);
+  app.add_option("--strength-step", o.up.strength_step,
+                 "relative step of the grid Sr is rounded to, so that equal strengths share an MPM material")
+      ->capture_default_str()->group(up_group);
+  app.add_option("--max-liquefied-materials", o.up.max_liquefied_materials,
+                 "at most this many liquefied materials from --residual-ratio / --residual-n160cs (the grid step is widened)")
+      ->capture_default_str()->group(up_group);
   app.add_flag("--check-options", o.check_options,
                "check the options (and the --ground-motion record) and stop, before reading the FEM files: "
                "a driver runs this before the FEM analysis")->group("Inputs");
@@ -462,7 +550,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     return 2;
   }
   try {
-    return run(o, out, err);
+    return run(o, app, out, err);
   } catch (const common::InputError& e) {
     err << "fem2mpm: error: " << common::printable(e.what()) << "\n";
     return 2;

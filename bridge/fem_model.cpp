@@ -12,6 +12,7 @@
 
 #include "common/input_error.hpp"
 #include "common/json_file.hpp"
+#include "common/number_text.hpp"
 
 namespace bridge {
 namespace {
@@ -179,6 +180,26 @@ class FlatEntry {
   int count_ = 0;
 };
 
+/// The element kinds by OpenSees type word (false: not one of them).
+bool element_kind(std::string_view type, ElementKind& kind, bool& pore_pressure) {
+  pore_pressure = false;
+  if (type == "SSPquad") kind = ElementKind::SSPquad;
+  else if (type == "FourNodeQuad" || type == "quad") kind = ElementKind::Quad;
+  else if (type == "Tri31") kind = ElementKind::Tri31;
+  else if (type == "SSPquadUP") kind = ElementKind::SSPquad, pore_pressure = true;
+  else if (type == "FourNodeQuadUP" || type == "quadUP") kind = ElementKind::Quad, pore_pressure = true;
+  else return false;
+  return true;
+}
+
+/// A node's "ndf": 1 to 6 dofs; nullopt when the entry has none (the node is then taken as 2-dof).
+std::optional<int> ndf_of(double value, bool integral, const std::string& where_text) {
+  if (!integral || value < 1 || value > 6)
+    throw common::InputError(where_text, "expected \"ndf\" to be a whole number of dofs 1 to 6, got " +
+                                             common::number_text(value, 6));
+  return static_cast<int>(value);
+}
+
 /// The fast path for a node line; false when the entry is not in the plain form (use the JSON parser).
 bool add_node_fast(FemModel& model, const FlatEntry& f, const std::string& where_text) {
   const auto tag = f.tag("name");
@@ -186,6 +207,10 @@ bool add_node_fast(FemModel& model, const FlatEntry& f, const std::string& where
   if (!tag || !crd || crd->kind != FlatEntry::Value::Kind::Array || crd->count != 2) return false;
   FemNode node;
   node.tag = *tag;
+  if (const auto* ndf = f.find("ndf")) {
+    if (ndf->kind != FlatEntry::Value::Kind::Number) return false;
+    node.ndf = *ndf_of(ndf->number, ndf->integral, where_text);
+  }
   node.crd = Eigen::Vector2d(crd->items[0], crd->items[1]);
   insert_node(model, node, where_text);
   return true;
@@ -200,10 +225,7 @@ bool add_element_fast(FemModel& model, const FlatEntry& f, const std::string& wh
   if (!tag || !type || type->kind != Kind::String || !nodes || nodes->kind != Kind::Array) return false;
   FemElement e;
   e.tag = *tag;
-  if (type->text == "SSPquad") e.kind = ElementKind::SSPquad;
-  else if (type->text == "FourNodeQuad" || type->text == "quad") e.kind = ElementKind::Quad;
-  else if (type->text == "Tri31") e.kind = ElementKind::Tri31;
-  else return false;
+  if (!element_kind(type->text, e.kind, e.pore_pressure)) return false;
   if (nodes->count != node_count(e.kind)) return false;
   for (int a = 0; a < node_count(e.kind); ++a) {
     const double v = nodes->items[static_cast<std::size_t>(a)];
@@ -231,6 +253,10 @@ void add_node(FemModel& model, const json& j, const std::string& where_text) {
   if (crd->size() != 2) throw common::InputError(where_text, "expected a 2D model (-ndm 2), \"crd\" has " +
                                                                  std::to_string(crd->size()) + " values");
   node.crd = Eigen::Vector2d((*crd)[0].get<double>(), (*crd)[1].get<double>());
+  if (const auto ndf = j.find("ndf"); ndf != j.end()) {
+    if (!ndf->is_number()) throw common::InputError(where_text, "expected \"ndf\" to be a number, got " + ndf->dump());
+    node.ndf = *ndf_of(ndf->get<double>(), ndf->is_number_integer(), where_text);
+  }
   insert_node(model, node, where_text);
 }
 
@@ -242,16 +268,9 @@ void add_element(FemModel& model, const json& j, const std::string& where_text) 
     model.boundary_devices.push_back(e.tag);
     return;
   }
-  if (type == "SSPquad") {
-    e.kind = ElementKind::SSPquad;
-  } else if (type == "FourNodeQuad" || type == "quad") {
-    e.kind = ElementKind::Quad;
-  } else if (type == "Tri31") {
-    e.kind = ElementKind::Tri31;
-  } else {
+  if (!element_kind(type, e.kind, e.pore_pressure))
     throw common::InputError(where_text, "element " + std::to_string(e.tag) + ": unsupported element type '" + type +
-                                             "' (expected SSPquad, FourNodeQuad/quad or Tri31)");
-  }
+                                             "' (expected SSPquad, FourNodeQuad/quad, Tri31, SSPquadUP or FourNodeQuadUP)");
   const int count = node_count(e.kind);
   const auto nodes = j.find("nodes");
   if (nodes == j.end() || !nodes->is_array() || nodes->size() != static_cast<std::size_t>(count))
@@ -296,6 +315,23 @@ void add_material(FemModel& model, const json& j) {
     model.materials[m.name] = m;
     return;
   }
+  if (m.type == "PM4Sand" || m.type == "PM4Silt") {  // fem_tcl's entries (OpenSees 3.8 prints a text block)
+    m.pm4_G0 = opt(m.type == "PM4Sand" ? "G0" : "G_o");
+    m.pm4_P_atm = opt("P_atm");
+    m.phi_cv_deg = opt("phicv");
+    m.nu = opt("nu");
+    m.rho = opt("Den");
+    model.materials[m.name] = m;
+    return;
+  }
+  if (m.type == "PressureDependMultiYield02") {  // fem_tcl's entry (OpenSees 3.8 prints a bare word)
+    from_bulk_and_shear(opt("refBulkModul"), opt("refShearModul"));
+    m.rho = opt("rho");
+    m.multi_yield_cohesion = opt("c");
+    m.multi_yield_friction_deg = opt("frictionAng");
+    model.materials[m.name] = m;
+    return;
+  }
   if (m.type == "PressureIndependMultiYield") {  // fem_tcl's entry (multi_yield_match.hpp)
     from_bulk_and_shear(opt("refBulkModul"), opt("refShearModul"));
     m.rho = opt("rho");
@@ -314,25 +350,28 @@ void add_material(FemModel& model, const json& j) {
   model.materials[m.name] = m;
 }
 
-/// One "constraints.fix" entry: {"node": tag, "fix": [0|1, 0|1]}.
+/// One "constraints.fix" entry: {"node": tag, "fix": [0|1, 0|1]}, one flag per dof (a third for a u-p node's
+/// pore pressure).
 void add_fix(FemModel& model, const json& j, const std::string& where_text) {
   const auto node = j.find("node");
   const auto fix = j.find("fix");
-  const bool flags_ok = fix != j.end() && fix->is_array() && fix->size() == 2 &&
+  const bool flags_ok = fix != j.end() && fix->is_array() && (fix->size() == 2 || fix->size() == 3) &&
                         std::all_of(fix->begin(), fix->end(), [](const json& v) { return v.is_number_integer() && (v == 0 || v == 1); });
   if (!j.is_object() || node == j.end() || !node->is_number_integer() || !flags_ok)
-    throw common::InputError(where_text, "expected {\"node\": tag, \"fix\": [0 or 1, 0 or 1]}, got " + j.dump());
-  model.fixes.push_back({node->get<long>(), (*fix)[0] == 1, (*fix)[1] == 1});
+    throw common::InputError(where_text, "expected {\"node\": tag, \"fix\": [0 or 1, 0 or 1]} (a third flag for a u-p "
+                                         "node's pore pressure), got " + j.dump());
+  model.fixes.push_back({node->get<long>(), (*fix)[0] == 1, (*fix)[1] == 1, fix->size() == 3 && (*fix)[2] == 1});
 }
 
-/// One "constraints.equalDOF" entry: {"retained": tag, "constrained": tag, "dofs": [1 and/or 2]}.
+/// One "constraints.equalDOF" entry: {"retained": tag, "constrained": tag, "dofs": [1, 2 and/or 3]} (3: a u-p
+/// node's pore pressure).
 void add_tie(FemModel& model, const json& j, const std::string& where_text) {
   const auto retained = j.find("retained"), constrained = j.find("constrained"), dofs = j.find("dofs");
   const bool dofs_ok = dofs != j.end() && dofs->is_array() && !dofs->empty() &&
-                       std::all_of(dofs->begin(), dofs->end(), [](const json& v) { return v.is_number_integer() && (v == 1 || v == 2); });
+                       std::all_of(dofs->begin(), dofs->end(), [](const json& v) { return v.is_number_integer() && v >= 1 && v <= 3; });
   if (!j.is_object() || retained == j.end() || !retained->is_number_integer() || constrained == j.end() ||
       !constrained->is_number_integer() || !dofs_ok)
-    throw common::InputError(where_text, "expected {\"retained\": tag, \"constrained\": tag, \"dofs\": [1 and/or 2]}, got " + j.dump());
+    throw common::InputError(where_text, "expected {\"retained\": tag, \"constrained\": tag, \"dofs\": [1, 2 and/or 3]}, got " + j.dump());
   FemTie t{retained->get<long>(), constrained->get<long>(), {}};
   for (const auto& d : *dofs) t.dofs.push_back(d.get<int>());
   model.ties.push_back(std::move(t));
@@ -363,6 +402,93 @@ void finish(FemModel& model, const std::filesystem::path& file) {
   }
 }
 
+/// A text block's first line, quoted in a note (printable, at most 80 characters).
+std::string quoted_line(std::string_view line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  std::string text(first == std::string_view::npos ? std::string_view() : line.substr(first, 80));
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\r')) text.pop_back();
+  for (char& c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  return "'" + text + "'";
+}
+
+/// The numbers after `key` on a text line ("\tConnected external nodes:  1 2 4 3 ").
+std::vector<double> numbers_after(std::string_view line, std::string_view key) {
+  std::vector<double> out;
+  const auto at = line.find(key);
+  if (at == std::string_view::npos) return out;
+  std::istringstream words{std::string(line.substr(at + key.size()))};
+  for (double v; words >> v;) out.push_back(v);
+  return out;
+}
+
+/// OpenSees 3.8's FourNodeQuadUP::Print writes a text block, not JSON, into print -JSON's element list
+/// (SRC/element/UP-ucsd/FourNodeQuadUP.cpp, Print: "FourNodeQuadUP, element id:  N", "Connected external nodes:",
+/// "thickness:", "mass density:" (the fluid's), "surface pressure:", "body forces:", the material's own Print,
+/// then the Gauss-point stresses). The element is read from it: nodes, thickness, body forces, and the
+/// material tag where the material prints one (PM4Sand / PM4Silt "... Material, tag: N", a JSON entry's
+/// "name"); PressureDependMultiYield02 prints none, and the element's material is then left to the options.
+class QuadUpTextBlock {
+ public:
+  static bool starts(std::string_view line) { return line.find("FourNodeQuadUP, element id:") != std::string_view::npos; }
+  bool active() const { return active_; }
+
+  void start(std::string_view line, std::string at) {
+    active_ = true;
+    at_ = std::move(at);
+    element_ = FemElement{};
+    element_.kind = ElementKind::Quad;
+    element_.pore_pressure = true;
+    const auto id = numbers_after(line, "element id:");
+    tag_ok_ = id.size() == 1 && id[0] == std::floor(id[0]);
+    if (tag_ok_) element_.tag = static_cast<long>(id[0]);
+    nodes_ok_ = false;
+    material_named_ = false;
+  }
+
+  /// One line of the block.
+  void feed(std::string_view line) {
+    if (const auto n = numbers_after(line, "Connected external nodes:"); !n.empty()) {
+      nodes_ok_ = n.size() == 4;
+      for (std::size_t a = 0; a < 4 && nodes_ok_; ++a) {
+        nodes_ok_ = n[a] == std::floor(n[a]) && std::abs(n[a]) < 9e15;
+        element_.node_tags[a] = static_cast<long>(n[a]);
+      }
+    } else if (const auto t = numbers_after(line, "thickness:"); t.size() == 1) {
+      element_.thickness = t[0];
+    } else if (const auto b = numbers_after(line, "body forces:"); b.size() == 2) {
+      element_.body_force = Eigen::Vector2d(b[0], b[1]);
+    } else if (const auto m = numbers_after(line, "Material, tag:"); m.size() == 1 && !material_named_) {
+      element_.material = common::number_text(m[0], 17);
+      material_named_ = true;
+    } else if (const auto brace = line.find('{'); brace != std::string_view::npos && !material_named_) {
+      const auto close = line.find('}', brace);
+      const json j = json::parse(line.substr(brace, close == std::string_view::npos ? 0 : close - brace + 1), nullptr, false);
+      if (j.is_object() && j.contains("name")) {
+        element_.material = name_text(j["name"]);
+        material_named_ = true;
+      }
+    }
+  }
+
+  /// The element read (throws InputError naming the block's first line when its id or nodes are missing).
+  FemElement finish(std::vector<std::string>& skipped) {
+    active_ = false;
+    if (!tag_ok_ || !nodes_ok_)
+      throw common::InputError(at_, "OpenSees' FourNodeQuadUP text block: expected \"element id: N\" and \"Connected "
+                                    "external nodes:\" with 4 node tags");
+    if (!material_named_)
+      skipped.push_back(at_ + ": FourNodeQuadUP element " + std::to_string(element_.tag) + " (OpenSees' text block): its "
+                        "material prints no tag (PressureDependMultiYield02): the material from the options");
+    return element_;
+  }
+
+ private:
+  bool active_ = false, tag_ok_ = false, nodes_ok_ = false, material_named_ = false;
+  std::string at_;
+  FemElement element_;
+};
+
 /// OpenSees 3.8 and fem_tcl write one node, element or material per line: read the entries line by
 /// line (fast, and tolerant of the bare word OpenSees writes in DruckerPrager entries: that material is
 /// then left to the options). nullopt when the text is not in that layout.
@@ -374,9 +500,27 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
   std::string line;
   enum class Section { None, Nodes, Elements, Materials, Fixes, Ties } section = Section::None;
   FlatEntry flat;
+  QuadUpTextBlock quad_up;
+  bool in_text_block = false;  // inside a material's or element's text block (OpenSees' non-JSON Print)
+  std::size_t quad_up_blocks = 0;
   int line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
+    const std::string here = file.string() + ":" + std::to_string(line_no);
+    if (section == Section::Elements && QuadUpTextBlock::starts(line)) {
+      if (quad_up.active()) insert_element(model, quad_up.finish(model.skipped), here);
+      quad_up.start(line, here);
+      ++quad_up_blocks;
+      continue;
+    }
+    if (quad_up.active()) {
+      const auto lead = line.find_first_not_of(" \t\r");
+      if (lead == std::string::npos || (line[lead] != ',' && line[lead] != ']')) {
+        quad_up.feed(line);
+        continue;
+      }
+      insert_element(model, quad_up.finish(model.skipped), here);
+    }
     if (line.find("\"nodes\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Nodes; continue; }
     if (line.find("\"elements\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Elements; continue; }
     if (line.find("\"ndMaterials\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Materials; continue; }
@@ -385,7 +529,21 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
     if (line.find("\"equalDOF\":") != std::string::npos && line.find('{') == std::string::npos) { section = Section::Ties; continue; }
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
-    if (line[first] == ']') { section = Section::None; continue; }
+    if (line[first] == ']') { section = Section::None; in_text_block = false; continue; }
+    if (line[first] != '{' && line[first] != ',' && (section == Section::Materials || section == Section::Elements)) {
+      // OpenSees 3.8's Print of PM4Sand, PM4Silt, PressureDependMultiYield02, Viscous, ... (a text block): skipped,
+      // named once per block.
+      if (!in_text_block) {
+        const std::string what = section == Section::Materials ? "ndMaterials" : "elements";
+        model.skipped.push_back(here + ": " + what + ": OpenSees' text block " + quoted_line(line) +
+                                " is not JSON: skipped" +
+                                (section == Section::Materials ? " (give that material with --material)" : ""));
+        if (section == Section::Materials) model.materials_readable = false;
+      }
+      in_text_block = true;
+      continue;
+    }
+    in_text_block = false;
     if (line[first] != '{' || section == Section::None) continue;
     std::string entry = line.substr(first);
     while (!entry.empty() && (entry.back() == ',' || entry.back() == ' ' || entry.back() == '\r')) entry.pop_back();
@@ -418,6 +576,10 @@ std::optional<FemModel> parse_line_by_line(const std::string& text, const std::f
     else if (section == Section::Elements) add_element(model, j, at);
     else add_material(model, j);
   }
+  if (quad_up.active()) insert_element(model, quad_up.finish(model.skipped), file.string());
+  if (quad_up_blocks > 0)
+    model.skipped.push_back(file.string() + ": " + std::to_string(quad_up_blocks) + " FourNodeQuadUP elements read from "
+                            "OpenSees' text blocks (not JSON): nodes, thickness, body forces, material tag");
   if (model.nodes.empty() || model.elements.empty()) return std::nullopt;  // not that layout
   finish(model, file);
   return model;

@@ -1,8 +1,10 @@
 #pragma once
-// The FEM model as OpenSees' `print -JSON` describes it (FORMATS.md section 3): nodes, four-node
-// elements (SSPquad, quad) and nD materials. OpenSees 3.8 writes invalid JSON for DruckerPrager and
-// the multi-yield materials (a bare word); the reader then takes nodes and elements line by line and
-// leaves the materials to command-line options.
+// The FEM model as OpenSees' `print -JSON` describes it (FORMATS.md section 3): nodes (with their dof
+// count: 3 for the pore-pressure nodes of a u-p model), four-node elements (SSPquad, quad, Tri31 and the u-p
+// SSPquadUP and FourNodeQuadUP) and nD materials. OpenSees 3.8 writes invalid JSON for DruckerPrager,
+// PM4Sand, PM4Silt, the multi-yield materials and FourNodeQuadUP (text blocks); the reader then takes nodes
+// and elements line by line (FourNodeQuadUP from its text block), lists what it skipped, and leaves the
+// materials to command-line options.
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
@@ -22,6 +24,7 @@ inline int node_count(ElementKind kind) { return kind == ElementKind::Tri31 ? 3 
 
 struct FemNode {
   long tag = 0;
+  int ndf = 2;                                    ///< dofs per node ("ndf"; 3: u-p, dof 3 the pore pressure)
   Eigen::Vector2d crd = Eigen::Vector2d::Zero();  ///< reference coordinates, model units
 };
 
@@ -33,7 +36,12 @@ struct FemElement {
   double thickness = 1;
   std::string material;              ///< material name ("" when the element names none)
   double mass_per_volume = 0;        ///< quad's `masspervolume` (replaces the material rho when > 0)
-  Eigen::Vector2d body_force = Eigen::Vector2d::Zero();  ///< force per unit volume (b1, b2)
+  /// Force per unit volume (b1, b2); for a u-p element (SSPquadUP, FourNodeQuadUP) an acceleration (OpenSees
+  /// multiplies it by the material density).
+  Eigen::Vector2d body_force = Eigen::Vector2d::Zero();
+  /// A u-p element (SSPquadUP: 1 Gauss point like SSPquad; FourNodeQuadUP: 4 like quad): its nodes carry the
+  /// pore pressure as dof 3 and its stress recorder gives the effective stress.
+  bool pore_pressure = false;
 };
 
 /// What the bridge needs of an nD material; model units (stress, density) until converted.
@@ -47,12 +55,16 @@ struct FemMaterial {
   std::optional<double> dp_sigma_y, dp_rho, dp_rho_bar;
   /// PressureIndependMultiYield only: cohesi and frictionAng (E and nu from refShearModul, refBulkModul).
   std::optional<double> multi_yield_cohesion, multi_yield_friction_deg;
+  /// PM4Sand / PM4Silt (fem_tcl's entries): G0 (dimensionless; G = G0 P_atm in the elastic stage), P_atm and
+  /// phi_cv (degrees); nu and rho (from "Den") in E/nu/rho above.
+  std::optional<double> pm4_G0, pm4_P_atm, phi_cv_deg;
 };
 
-/// A homogeneous single-point constraint (`fix node fx fy`), from fem_tcl's "constraints.fix" list.
+/// A homogeneous single-point constraint (`fix node fx fy <fp>`), from fem_tcl's "constraints.fix" list.
 struct FemFix {
   long node = 0;
   bool x = false, y = false;
+  bool pore_pressure = false;  ///< a u-p node's dof 3 fixed (a drained node)
 };
 
 /// An `equalDOF retained constrained dofs...` tie (dofs 1-based), from "constraints.equalDOF".
@@ -74,6 +86,8 @@ struct FemModel {
   /// Tags of zeroLength elements (springs and dashpots of a compliant base or free-field sides): boundary
   /// devices of the FEM model, not soil, so they are not transferred.
   std::vector<long> boundary_devices;
+  /// What could not be read (OpenSees 3.8's text blocks in place of JSON), one line each, for the report.
+  std::vector<std::string> skipped;
 
   /// Index of the node with `tag`, or -1.
   int node_index(long tag) const;
@@ -85,8 +99,8 @@ struct FemModel {
 };
 
 /// Reads `print -JSON` output. Throws common::InputError "<file>:<line>: <what>" for a missing
-/// file, an element type other than SSPquad/quad, an unknown node tag, no nodes/elements, or a
-/// malformed "constraints" entry (naming the key).
+/// file, an element type other than SSPquad/quad/Tri31/SSPquadUP/FourNodeQuadUP, an unknown node tag, no
+/// nodes/elements, or a malformed "constraints" entry (naming the key).
 FemModel read_fem_model(const std::filesystem::path& file);
 
 /// Parses the JSON text (exposed for tests); `file` names it in errors.

@@ -6,9 +6,11 @@
 #include <numbers>
 #include <sstream>
 
+#include "bridge/drained_strength.hpp"
 #include "bridge/drucker_prager_match.hpp"
 #include "bridge/multi_yield_match.hpp"
 #include "bridge/recorder_file.hpp"
+#include "bridge/recorder_rows.hpp"
 #include "bridge/triangle_split.hpp"
 #include "common/input_error.hpp"
 #include "common/number_text.hpp"
@@ -32,70 +34,6 @@ std::string tag_range_text(const std::vector<long>& tags) {
     return s;
   }
   return std::to_string(tags.front()) + " .. " + std::to_string(tags.back()) + " (" + std::to_string(tags.size()) + ")";
-}
-
-/// The transfer row of the displacement file, and which of the rows at its time it is: after
-/// `loadConst -time 0` the time restarts, so "t = 0" may name a row of each stage.
-struct TransferRow {
-  std::size_t index = 0;
-  double time = 0;
-  int time_digits = 17;
-  std::size_t occurrence = 0;  ///< among the rows at `time`, 0 the first
-  std::size_t count = 1;       ///< rows at `time`
-};
-
-/// The displacement file's row: by time when the transfer time is given, else by row number, else the last.
-TransferRow pick_transfer_row(const RecorderFile& file, std::optional<double> time, std::optional<long> row,
-                              std::vector<std::string>& notes) {
-  std::size_t index = 0;
-  if (time) {
-    std::vector<int> lines;
-    index = file.find_time(*time, &lines);
-    if (lines.size() > 1) {
-      std::string all;
-      for (int l : lines) all += (all.empty() ? "" : ", ") + std::to_string(l);
-      notes.push_back(file.path().string() + ": time " + fmt(*time) + " appears on lines " + all +
-                      " (the time restarts after loadConst -time); using the last, line " +
-                      std::to_string(file.rows()[index].line) + " (choose another with --row)");
-    }
-  } else if (row) {
-    index = file.find_row(*row);
-  } else {
-    index = file.rows().size() - 1;
-    const bool cut = !file.rows()[index].terminated && index > 0;
-    if (cut) --index;
-    notes.push_back("no --time given: using the last " + std::string(cut ? "complete " : "") + "row of " +
-                    file.path().string() + " (line " + std::to_string(file.rows()[index].line) + ", t = " +
-                    fmt(file.rows()[index].time) + ")" + (cut ? "; the row after it was cut while being written" : ""));
-  }
-  TransferRow out;
-  out.index = index;
-  out.time = file.rows()[index].time;
-  out.time_digits = file.time_digits(index);
-  const auto same_time = file.rows_at_time(out.time, out.time_digits);
-  out.count = same_time.size();
-  out.occurrence = static_cast<std::size_t>(std::find(same_time.begin(), same_time.end(), index) - same_time.begin());
-  return out;
-}
-
-/// The row of another recorder of the same analysis at the transfer row: the same time and, when
-/// the time repeats (loadConst -time), the same one of its repeats, so stage-1 displacements never
-/// meet stage-2 stresses.
-std::size_t matching_row(const RecorderFile& file, const RecorderFile& reference, const TransferRow& transfer) {
-  const auto same_time = file.rows_at_time(transfer.time, transfer.time_digits);
-  if (same_time.size() == transfer.count) return same_time[transfer.occurrence];
-  auto lines = [](const RecorderFile& f, const std::vector<std::size_t>& rows) {
-    std::string all;
-    for (std::size_t r : rows) all += (all.empty() ? "" : ", ") + std::to_string(f.rows()[r].line);
-    return all;
-  };
-  throw common::InputError(
-      file.path().string(),
-      "time " + fmt(transfer.time) + " is on line(s) " + lines(file, same_time) + " here but on line(s) " +
-          lines(reference, reference.rows_at_time(transfer.time, transfer.time_digits)) + " of " +
-          reference.path().string() + " (transfer row: line " + std::to_string(reference.rows()[transfer.index].line) +
-          "): the recorders did not record the same steps; record them over the same analyses, or transfer at a "
-          "time that is on one row of each");
 }
 
 /// Copies every value `o` sets into the working values (later overrides win).
@@ -140,6 +78,15 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
                      " > 0 has a strength frozen at each point's confinement, no one Mohr-Coulomb: give --material " +
                      name + ":type=mohr-coulomb,phi=...,cohesion=...)";
       }
+    } else if (const auto drained = drained_strength(*fem)) {
+      v.type = "mohr-coulomb";
+      v.E = drained->E;
+      v.nu = drained->nu;
+      if (drained->rho) v.rho = drained->rho;
+      v.phi = drained->phi_deg;
+      v.c = drained->cohesion;
+      v.psi = drained->psi_deg;
+      notes.push_back("material '" + name + "': " + drained->note);
     } else if (fem->type == "DruckerPrager" && fem->dp_sigma_y && fem->dp_rho && fem->dp_rho_bar) {
       if (const auto mc = plane_strain_mohr_coulomb(*fem->dp_sigma_y, *fem->dp_rho, *fem->dp_rho_bar)) {
         v.type = "mohr-coulomb";
@@ -161,8 +108,8 @@ MpmMaterial resolve_material(const FemModel& model, const std::string& name, con
   auto& [E, nu, rho, phi, c, psi, tension, type] = v;
   const std::string src = model.source.string() + ": material '" + name + "'";
   const std::string why = !model.materials_readable
-                              ? " (the file is not valid JSON, as OpenSees 3.8 writes it for DruckerPrager and multi-yield "
-                                "materials: give the material with --material-type, --E, --nu, --density, --phi, --cohesion)"
+                              ? " (the file is not valid JSON, as OpenSees 3.8 writes it for DruckerPrager, PM4Sand, PM4Silt "
+                                "and multi-yield materials: give the material with --material-type, --E, --nu, --density, --phi, --cohesion)"
                               : !mapping_failure.empty() ? mapping_failure
                               : (fem ? " (type '" + fem->type + "' has no MPM counterpart: give --material-type and its parameters)"
                                      : " (not in properties.ndMaterials: give --material-type and its parameters)");
@@ -387,7 +334,10 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
       if (const int a = fe.nodes[static_cast<std::size_t>(k)]; !recorded[static_cast<std::size_t>(a)])
         throw common::InputError(options.disp.string(), "no column for node " + std::to_string(model.nodes[static_cast<std::size_t>(a)].tag) +
                                                             ", used by element " + std::to_string(fe.tag) + "; record all element nodes");
-    if (fe.body_force.norm() > 0) gravity_samples.push_back(fe.body_force.norm() * factor / e.density);
+    // A u-p element's body force is an acceleration (OpenSees' SSPquadUP and FourNodeQuadUP multiply it by the
+    // material density); a dry element's a force per unit volume.
+    if (fe.body_force.norm() > 0)
+      gravity_samples.push_back(fe.pore_pressure ? fe.body_force.norm() : fe.body_force.norm() * factor / e.density);
     st.elements.push_back(e);
   }
   if (element_tags.size() != model.elements.size())
@@ -421,26 +371,60 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
                  : std::string()));
   }
   out.stress_components = comps;
-  const std::size_t stress_row = matching_row(stress, disp, transfer);
-  const auto sv = stress.values(stress_row);
-  st.gauss_stress.resize(gp_total);
-  for (std::size_t e = 0; e < st.elements.size(); ++e) {
-    const double nu = st.materials[st.elements[e].material].poisson_ratio;
-    for (std::size_t g = st.gauss_offset[e]; g < st.gauss_offset[e + 1]; ++g) {
-      const double* s = &sv[g * static_cast<std::size_t>(comps)];
-      Stress6& out6 = st.gauss_stress[g];
-      if (comps == 3) out6 = {s[0], s[1], options.plane_stress ? 0.0 : nu * (s[0] + s[1]), s[2], 0, 0};
-      else if (comps == 5) out6 = {s[0], s[1], s[2], s[3], 0, 0};
-      else out6 = {s[0], s[1], s[2], s[3], s[4], s[5]};
-      for (double& c : out6) {
-        c *= factor;
-        if (!std::isfinite(c))
-          throw common::InputError(stress.where(stress_row),
-                                   "element " + std::to_string(st.elements[e].tag) + ", Gauss point " +
-                                       std::to_string(g - st.gauss_offset[e] + 1) +
-                                       ": its stress is not finite in Pa (values too large for double precision)");
+  // The Gauss-point stresses of a row of the stress file (SI, the out-of-plane stress derived when not recorded).
+  const auto gauss_stresses = [&](std::size_t row) {
+    const auto sv = stress.values(row);
+    std::vector<Stress6> gauss(gp_total);
+    for (std::size_t e = 0; e < st.elements.size(); ++e) {
+      const double nu = st.materials[st.elements[e].material].poisson_ratio;
+      for (std::size_t g = st.gauss_offset[e]; g < st.gauss_offset[e + 1]; ++g) {
+        const double* s = &sv[g * static_cast<std::size_t>(comps)];
+        Stress6& out6 = gauss[g];
+        if (comps == 3) out6 = {s[0], s[1], options.plane_stress ? 0.0 : nu * (s[0] + s[1]), s[2], 0, 0};
+        else if (comps == 5) out6 = {s[0], s[1], s[2], s[3], 0, 0};
+        else out6 = {s[0], s[1], s[2], s[3], s[4], s[5]};
+        for (double& c : out6) {
+          c *= factor;
+          if (!std::isfinite(c))
+            throw common::InputError(stress.where(row),
+                                     "element " + std::to_string(st.elements[e].tag) + ", Gauss point " +
+                                         std::to_string(g - st.gauss_offset[e] + 1) +
+                                         ": its stress is not finite in Pa (values too large for double precision)");
+        }
       }
     }
+    return gauss;
+  };
+  st.gauss_stress = gauss_stresses(matching_row(stress, disp, transfer));
+  if (options.pore_pressure) {
+    // u-p: the pore pressure now and at the reference row, the reference row's effective stress (sigma'v0),
+    // and the shear strain since then (pore_pressure.hpp).
+    const PorePressureOptions& up = *options.pore_pressure;
+    const TransferRow reference = pick_reference_row(disp, transfer, up.reference_time, "--reference-time", out.reference_how);
+    out.reference_time = reference.time;
+    out.reference_row = disp.where(reference.index);
+    read_nodal_pore_pressure(model, up, disp, transfer, reference, factor, st, out.notes);
+    st.reference_gauss_stress = gauss_stresses(matching_row(stress, disp, reference));
+    if (!up.strain.empty()) {
+      const RecorderFile strain(up.strain);
+      const std::size_t w = strain.data_width();
+      const int strain_comps = w == 3 * gp_total ? 3 : w == 6 * gp_total ? 6 : 0;
+      if (strain_comps == 0)
+        throw common::InputError(strain.where(strain.rows().size() - 1),
+                                 std::to_string(w) + " values after the time column, but the stress file's layout has " +
+                                     std::to_string(gp_total) + " Gauss points: expected " + std::to_string(3 * gp_total) +
+                                     " (strain: exx eyy gxy) or " + std::to_string(6 * gp_total) + " (6 per Gauss point)");
+      const auto now = strain.values(matching_row(strain, disp, transfer));
+      const auto before = strain.values(matching_row(strain, disp, reference));
+      st.gauss_shear_strain = equivalent_shear_strain(now, before, strain_comps);
+      out.notes.push_back(strain.path().string() + ": the liquefied particles' softening starts at the equivalent deviatoric "
+                          "strain sqrt(2/3 e:e) of the strain since the reference row (the total strain: its elastic part, "
+                          "small after liquefaction, included)");
+    }
+  } else if (std::any_of(model.elements.begin(), model.elements.end(), [](const FemElement& e) { return e.pore_pressure; })) {
+    out.warnings.push_back(model.source.string() + ": u-p elements (SSPquadUP / FourNodeQuadUP) but no --pore-pressure: "
+                           "the particles carry the recorded effective stress as their stress, as if drained; give the "
+                           "pore pressure recorder (-dof 3 vel) for the total stress and r_u");
   }
   if (comps == 3 && options.plane_stress)
     out.notes.push_back(stress.path().string() + ": 3 stress components per Gauss point (sxx syy sxy): szz = 0 "
@@ -469,7 +453,10 @@ AssembledState read_fem_state(const FemModel& model, const ReadOptions& options)
     if (!std::isfinite(st.gravity))
       throw common::InputError(model.source.string() + ": bodyForces", "the gravity they give (body force / density) is " +
                                                                           fmt(st.gravity) + ", not finite; give --gravity");
-    out.notes.push_back("gravity " + fmt(st.gravity) + " m/s2 from the elements' body forces / density (override with --gravity)");
+    const bool up = std::any_of(model.elements.begin(), model.elements.end(), [](const FemElement& e) { return e.pore_pressure; });
+    out.notes.push_back("gravity " + fmt(st.gravity) + " m/s2 from the elements' body forces / density" +
+                        (up ? std::string("; a u-p element's body force is the acceleration itself") : std::string()) +
+                        " (override with --gravity)");
   } else {
     st.gravity = 9.81;
     out.notes.push_back("gravity 9.81 m/s2 (default; the elements carry no body force; override with --gravity)");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bridge/fem_model.hpp"
+#include "bridge/pore_pressure.hpp"
 #include "bridge/transfer_state.hpp"
 
 namespace bridge {
@@ -42,6 +43,8 @@ struct ReadOptions {
   /// With 3 stress components per Gauss point: szz = nu (sxx + syy) (plane strain, default) or 0
   /// (plane-stress FEM models).
   bool plane_stress = false;
+  /// A u-p model's pore pressure and reference state (pore_pressure.hpp); unset: a dry transfer.
+  std::optional<PorePressureOptions> pore_pressure;
 };
 
 struct AssembledState {
@@ -51,6 +54,9 @@ struct AssembledState {
   std::size_t triangles_split = 0;          ///< Tri31 elements mapped as 3 quads each (split_triangles)
   std::vector<std::string> notes;           ///< what the user should know (derived szz, zero velocity, ...)
   std::vector<std::string> warnings;        ///< suspicious input (units)
+  /// u-p transfers: the reference row ("<disp file>:<line>"), its time and how it was found.
+  std::string reference_row, reference_how;
+  double reference_time = 0;
 };
 
 /// Throws common::InputError naming the file and line (or option) on any inconsistency.

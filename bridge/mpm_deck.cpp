@@ -80,11 +80,11 @@ ordered_json material_json(const MpmMaterial& m) {
   j["cohesion"] = m.cohesion;
   j["residual_friction"] = m.friction * deg;
   j["residual_dilation"] = m.dilation * deg;
-  j["residual_cohesion"] = m.cohesion;
-  j["peak_pdstrain"] = 0.0;
-  j["residual_pdstrain"] = 0.0;
+  j["residual_cohesion"] = m.softening ? m.softening->residual_cohesion : m.cohesion;
+  j["peak_pdstrain"] = m.softening ? m.softening->peak_pdstrain : 0.0;
+  j["residual_pdstrain"] = m.softening ? m.softening->residual_pdstrain : 0.0;
   j["tension_cutoff"] = m.tension_cutoff;
-  j["softening"] = false;
+  j["softening"] = m.softening.has_value();
   return j;
 }
 

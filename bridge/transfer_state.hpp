@@ -2,6 +2,7 @@
 // The FEM state at the transfer time in SI units: what the readers assemble from the model file and
 // the recorder rows, and what the mapping (stress_recovery, particle_mapping) works on.
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,15 @@ struct MpmMaterial {
   double youngs_modulus = 0, poisson_ratio = 0;  ///< Pa, -
   double friction = 0, dilation = 0;             ///< rad
   double cohesion = 0, tension_cutoff = 0;       ///< Pa
+  /// CB-Geo's linear softening (MohrCoulomb2D peak_pdstrain, residual_pdstrain, residual_cohesion): the
+  /// cohesion falls from `cohesion` to `residual_cohesion` (Pa) between the plastic deviatoric strains
+  /// peak_pdstrain and residual_pdstrain; friction and dilation stay. Unset: no softening.
+  struct Softening {
+    double residual_cohesion = 0, peak_pdstrain = 0, residual_pdstrain = 0;
+  };
+  std::optional<Softening> softening;
+  /// The particles of this material: how they were chosen (for the report; "" for a FEM material).
+  std::string origin;
 };
 
 struct TransferElement {
@@ -45,6 +55,14 @@ struct TransferState {
   std::vector<Stress6> gauss_stress;      ///< Pa
   std::vector<MpmMaterial> materials;
   double gravity = 9.81;                  ///< m/s2, acting in -y
+  /// u-p models transferred with --pore-pressure (pore_pressure.hpp), else all empty: the pore pressure per
+  /// node at the transfer time and at the reference time (Pa, compression positive; 0 at nodes without a
+  /// pore-pressure dof), and the effective stress per Gauss point at the reference time (Pa, tension positive),
+  /// for sigma'v0. gauss_stress is then the effective stress at the transfer time.
+  std::vector<double> pore_pressure, reference_pore_pressure;
+  std::vector<Stress6> reference_gauss_stress;
+  /// The equivalent deviatoric strain since the reference time per Gauss point (--strain), else empty.
+  std::vector<double> gauss_shear_strain;
 
   Vec2 current(int node) const { return reference[static_cast<std::size_t>(node)] + displacement[static_cast<std::size_t>(node)]; }
   QuadNodes current_nodes(const TransferElement& e) const;

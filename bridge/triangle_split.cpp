@@ -11,6 +11,7 @@ std::size_t split_triangles(TransferState& state) {
                                [](const TransferElement& e) { return e.node_count == 3; });
   if (!any) return 0;
   const bool loaded = !state.load.empty();
+  const bool up = !state.pore_pressure.empty();
   // A new node at the mean of `vertices`.
   const auto add_node = [&](std::initializer_list<int> vertices) {
     Vec2 x = Vec2::Zero(), u = Vec2::Zero(), v = Vec2::Zero();
@@ -25,6 +26,15 @@ std::size_t split_triangles(TransferState& state) {
     state.displacement.push_back(u / n);
     state.velocity.push_back(v / n);
     if (loaded) state.load.push_back(Vec2::Zero());
+    if (up) {  // the mean of the vertices' too (0 at a dry triangle's nodes, which have no pore pressure)
+      double p = 0, p0 = 0;
+      for (int a : vertices) {
+        p += state.pore_pressure[static_cast<std::size_t>(a)];
+        p0 += state.reference_pore_pressure[static_cast<std::size_t>(a)];
+      }
+      state.pore_pressure.push_back(p / n);
+      state.reference_pore_pressure.push_back(p0 / n);
+    }
     return static_cast<int>(state.reference.size() - 1);
   };
   std::map<std::pair<int, int>, int> midpoint_of;  // side (low, high node) -> its midpoint node
@@ -37,7 +47,15 @@ std::size_t split_triangles(TransferState& state) {
   };
 
   std::vector<TransferElement> elements;
-  std::vector<Stress6> stress;
+  std::vector<Stress6> stress, reference_stress;
+  std::vector<double> shear_strain;
+  const bool has_reference = !state.reference_gauss_stress.empty(), has_strain = !state.gauss_shear_strain.empty();
+  // Gauss point g of the old numbering, appended to the new one (every per-Gauss-point field).
+  const auto take = [&](std::size_t g) {
+    stress.push_back(state.gauss_stress[g]);
+    if (has_reference) reference_stress.push_back(state.reference_gauss_stress[g]);
+    if (has_strain) shear_strain.push_back(state.gauss_shear_strain[g]);
+  };
   elements.reserve(3 * state.elements.size());
   stress.reserve(state.gauss_stress.size() + 2 * state.elements.size());
   std::size_t split = 0;
@@ -46,8 +64,7 @@ std::size_t split_triangles(TransferState& state) {
     const std::size_t g0 = state.gauss_offset[e], g1 = state.gauss_offset[e + 1];
     if (el.node_count != 3) {
       elements.push_back(el);
-      stress.insert(stress.end(), state.gauss_stress.begin() + static_cast<std::ptrdiff_t>(g0),
-                    state.gauss_stress.begin() + static_cast<std::ptrdiff_t>(g1));
+      for (std::size_t g = g0; g < g1; ++g) take(g);
       continue;
     }
     ++split;
@@ -62,11 +79,13 @@ std::size_t split_triangles(TransferState& state) {
       quad.node_count = 4;
       quad.gauss_points = 1;
       elements.push_back(quad);
-      stress.push_back(state.gauss_stress[g0]);
+      take(g0);
     }
   }
   state.elements = std::move(elements);
   state.gauss_stress = std::move(stress);
+  state.reference_gauss_stress = std::move(reference_stress);
+  state.gauss_shear_strain = std::move(shear_strain);
   state.index_gauss_points();
   return split;
 }

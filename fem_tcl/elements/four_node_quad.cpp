@@ -14,26 +14,12 @@ FourNodeQuad::FourNodeQuad(int tag, std::array<domain::Node*, 4> nodes, const ma
   const std::string where = "element quad " + std::to_string(tag);
   if (!(thickness > 0.0)) throw common::InputError(where, "expected thickness > 0");
   if (pressure != 0.0) throw common::InputError(where, "surface pressure p != 0 is not supported; use nodal loads");
-  for (int g = 0; g < 4; ++g) materials_[g] = material.copy_for(plane);
-  gp_ = quad_gauss_points(nodes, thickness_, where);
+  points_.emplace(nodes, material, plane, thickness_, where);
 }
 
-void FourNodeQuad::update() {
-  for (int g = 0; g < 4; ++g) {
-    materials::Vector3 eps = materials::Vector3::Zero();
-    for (int a = 0; a < 4; ++a) {
-      const auto u = nodes()[a]->solid_disp();
-      eps[0] += gp_[g].dN(0, a) * u[0];
-      eps[1] += gp_[g].dN(1, a) * u[1];
-      eps[2] += gp_[g].dN(0, a) * u[1] + gp_[g].dN(1, a) * u[0];
-    }
-    materials_[g]->set_trial_strain(eps);
-  }
-}
+void FourNodeQuad::update() { points_->update(nodes()); }
 
-Matrix8 FourNodeQuad::stiffness_from(bool initial) {
-  return quad_stiffness(gp_, [&](int g) { return initial ? materials_[g]->initial_tangent() : materials_[g]->tangent(); });
-}
+Matrix8 FourNodeQuad::stiffness_from(bool initial) { return points_->stiffness(initial); }
 
 const Matrix8& FourNodeQuad::tangent_stiffness() {
   K_ = stiffness_from(false);
@@ -50,12 +36,13 @@ const Matrix8& FourNodeQuad::initial_stiffness() {
 
 const Vector8& FourNodeQuad::lumped_mass() {
   mass_.setZero();
+  const QuadGaussPoints& gp = points_->points();
   for (int g = 0; g < 4; ++g) {
-    const double rho = rho_ != 0.0 ? rho_ : materials_[g]->density();
-    const double rdv = rho * gp_[g].dvol;
+    const double rho = rho_ != 0.0 ? rho_ : points_->material(g).density();
+    const double rdv = rho * gp[g].dvol;
     for (int a = 0; a < 4; ++a) {
-      mass_[2 * a] += gp_[g].N[a] * rdv;
-      mass_[2 * a + 1] += gp_[g].N[a] * rdv;
+      mass_[2 * a] += gp[g].N[a] * rdv;
+      mass_[2 * a + 1] += gp[g].N[a] * rdv;
     }
   }
   return mass_;
@@ -64,14 +51,15 @@ const Vector8& FourNodeQuad::lumped_mass() {
 const Vector8& FourNodeQuad::resisting_force() {
   force_.setZero();
   const domain::Vector2 b = self_weight_applied() ? applied_body() : body_;
+  const QuadGaussPoints& gp = points_->points();
   for (int g = 0; g < 4; ++g) {
-    const materials::Vector3& s = materials_[g]->stress();
-    const double dv = gp_[g].dvol;
+    const materials::Vector3& s = points_->material(g).stress();
+    const double dv = gp[g].dvol;
     for (int a = 0; a < 4; ++a) {
-      force_[2 * a] += dv * (gp_[g].dN(0, a) * s[0] + gp_[g].dN(1, a) * s[2]);
-      force_[2 * a + 1] += dv * (gp_[g].dN(1, a) * s[1] + gp_[g].dN(0, a) * s[2]);
-      force_[2 * a] -= dv * gp_[g].N[a] * b[0];
-      force_[2 * a + 1] -= dv * gp_[g].N[a] * b[1];
+      force_[2 * a] += dv * (gp[g].dN(0, a) * s[0] + gp[g].dN(1, a) * s[2]);
+      force_[2 * a + 1] += dv * (gp[g].dN(1, a) * s[1] + gp[g].dN(0, a) * s[2]);
+      force_[2 * a] -= dv * gp[g].N[a] * b[0];
+      force_[2 * a + 1] -= dv * gp[g].N[a] * b[1];
     }
   }
   force_.head(num_dofs()) -= element_load();
@@ -79,15 +67,11 @@ const Vector8& FourNodeQuad::resisting_force() {
 }
 
 void FourNodeQuad::commit_state() {
-  for (auto& m : materials_) m->commit_state();
+  points_->commit_state();
   update_committed_tangent();
 }
-void FourNodeQuad::revert_to_last_commit() {
-  for (auto& m : materials_) m->revert_to_last_commit();
-}
-void FourNodeQuad::revert_to_start() {
-  for (auto& m : materials_) m->revert_to_start();
-}
+void FourNodeQuad::revert_to_last_commit() { points_->revert_to_last_commit(); }
+void FourNodeQuad::revert_to_start() { points_->revert_to_start(); }
 
 std::optional<std::vector<double>> FourNodeQuad::response(const std::vector<std::string>& args) {
   if (args.empty()) return std::nullopt;
@@ -96,46 +80,17 @@ std::optional<std::vector<double>> FourNodeQuad::response(const std::vector<std:
     const Vector8& f = resisting_force();
     return std::vector<double>(f.data(), f.data() + 8);
   }
-  if (what == "stress" || what == "stresses" || what == "strain" || what == "strains") {
-    const bool stress = what.rfind("stress", 0) == 0;
-    std::vector<double> out;
-    out.reserve(12);
-    for (const auto& m : materials_) {
-      const materials::Vector3& v = stress ? m->stress() : m->strain();
-      out.insert(out.end(), v.data(), v.data() + 3);
-    }
-    return out;
-  }
   if (what == "minJacobian") return std::vector<double>{min_corner_jacobian()};
-  if (what == "stress3D" || what == "fullStress") {  // 4 Gauss points x (sxx syy szz sxy syz sxz)
-    std::vector<double> out;
-    out.reserve(24);
-    for (const auto& m : materials_) {
-      const materials::Vector6 v = m->stress_3d();
-      out.insert(out.end(), v.data(), v.data() + 6);
-    }
-    return out;
-  }
-  if ((what == "material" || what == "integrPoint") && args.size() >= 3) {
-    const auto k = common::CommandArgs::parse_integer(args[1]);
-    if (!k || *k < 1 || *k > 4) return std::nullopt;
-    return materials_[*k - 1]->response(args[2]);
-  }
-  return std::nullopt;
+  return points_->response(args);
 }
 
 bool FourNodeQuad::set_parameter(std::string_view name, double value) {
-  bool any = false;
-  for (auto& m : materials_) any = m->set_parameter(name, value) || any;
+  const bool any = points_->set_parameter(name, value);
   if (any) have_Ki_ = false;
   return any;
 }
 
-bool FourNodeQuad::update_material_stage(int stage) {
-  bool any = false;
-  for (auto& m : materials_) any = m->update_stage(stage) || any;
-  return any;
-}
+bool FourNodeQuad::update_material_stage(int stage) { return points_->update_stage(stage); }
 
 nlohmann::ordered_json FourNodeQuad::to_json() const {
   return continuum_element_json(*this, "FourNodeQuad", thickness_, pressure_, rho_, body_, material_tag_);
@@ -166,10 +121,16 @@ std::unique_ptr<domain::Element> parse_four_node_quad(common::CommandArgs& args,
 
 namespace fem::elements {
 
-bool FourNodeQuad::reduce_strength(double factor) { return reduce_material_points_strength(materials_, factor); }
+bool FourNodeQuad::reduce_strength(double factor) {
+  return reduce_material_points_strength(points_->materials(), factor);
+}
 
-std::unique_ptr<domain::ElementState> FourNodeQuad::save_state() const { return save_material_points(materials_); }
+std::unique_ptr<domain::ElementState> FourNodeQuad::save_state() const {
+  return save_material_points(points_->materials());
+}
 
-void FourNodeQuad::restore_state(const domain::ElementState& state) { restore_material_points(materials_, state); }
+void FourNodeQuad::restore_state(const domain::ElementState& state) {
+  restore_material_points(points_->materials(), state);
+}
 
 }  // namespace fem::elements

@@ -29,8 +29,8 @@ class FourNodeQuad final : public domain::SolidElement {
   const Matrix8& tangent_stiffness() override;
   const Matrix8& initial_stiffness() override;
   bool linear_terms_fixed() const override {
-    for (const auto& m : materials_)
-      if (!m->initial_tangent_fixed()) return false;
+    for (int g = 0; g < 4; ++g)
+      if (!points_->material(g).initial_tangent_fixed()) return false;
     return true;
   }
   const Vector8& lumped_mass() override;
@@ -52,8 +52,7 @@ class FourNodeQuad final : public domain::SolidElement {
  private:
   Matrix8 stiffness_from(bool initial);
 
-  std::array<std::unique_ptr<materials::NDMaterial>, 4> materials_;
-  QuadGaussPoints gp_;
+  std::optional<QuadMaterialPoints> points_;  ///< set in the constructor, after the checks of the arguments
   int material_tag_;
   double thickness_;
   double pressure_;

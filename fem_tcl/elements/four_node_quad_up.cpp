@@ -13,11 +13,10 @@ FourNodeQuadUP::FourNodeQuadUP(int tag, std::array<domain::Node*, 4> nodes, cons
                                double pressure)
     : UpQuad(tag, nodes, fluid, b1, b2), material_tag_(material.tag()), thickness_(thickness),
       combined_bulk_(combined_bulk), pressure_(pressure) {
-  gp_ = quad_gauss_points(nodes, thickness, "element quadUP " + std::to_string(tag));
-  for (auto& m : materials_) m = material.copy_for(materials::PlaneType::PlaneStrain);
+  points_.emplace(nodes, material, materials::PlaneType::PlaneStrain, thickness, "element quadUP " + std::to_string(tag));
   Matrix84 Q = Matrix84::Zero();
   Eigen::Matrix4d S = Eigen::Matrix4d::Zero();
-  for (const QuadGaussPoint& g : gp_) {
+  for (const QuadGaussPoint& g : points_->points()) {
     const Eigen::Matrix<double, 1, 8> mB = quad_strain_matrix(g).topRows<2>().colwise().sum();  // m^T B
     Q.noalias() += g.dvol * (mB.transpose() * g.N.transpose());
     S.noalias() += (g.dvol / combined_bulk_) * (g.N * g.N.transpose());
@@ -29,7 +28,7 @@ FourNodeQuadUP::FourNodeQuadUP(int tag, std::array<domain::Node*, 4> nodes, cons
 void FourNodeQuadUP::form_flow_matrices(Eigen::Matrix4d& H, Eigen::Matrix<double, 4, 2>& G) const {
   H.setZero();
   G.setZero();
-  for (const QuadGaussPoint& g : gp_) {
+  for (const QuadGaussPoint& g : points_->points()) {
     H.noalias() += g.dvol * (fluid().hydraulic_x * g.dN.row(0).transpose() * g.dN.row(0) +
                              fluid().hydraulic_y * g.dN.row(1).transpose() * g.dN.row(1));
     G.noalias() += g.dvol * g.dN.transpose();
@@ -50,27 +49,16 @@ void FourNodeQuadUP::set_pressure_load() {
   }
 }
 
-void FourNodeQuadUP::update() {
-  for (int g = 0; g < 4; ++g) {
-    Eigen::Vector3d eps = Eigen::Vector3d::Zero();
-    for (int a = 0; a < 4; ++a) {
-      const auto u = nodes()[a]->solid_disp();
-      eps[0] += gp_[g].dN(0, a) * u[0];
-      eps[1] += gp_[g].dN(1, a) * u[1];
-      eps[2] += gp_[g].dN(0, a) * u[1] + gp_[g].dN(1, a) * u[0];
-    }
-    materials_[g]->set_trial_strain(eps);
-  }
-}
+void FourNodeQuadUP::update() { points_->update(nodes()); }
 
 const Matrix8& FourNodeQuadUP::solid_stiffness(domain::StiffnessKind kind) {
   if (kind == domain::StiffnessKind::Current) {
-    K_ = quad_stiffness(gp_, [&](int g) { return materials_[g]->tangent(); });
+    K_ = points_->stiffness(false);
     return K_;
   }
   // OpenSees getInitialStiff: from the initial tangents, kept after the first call
   if (!have_Ki_) {
-    Ki_ = quad_stiffness(gp_, [&](int g) { return materials_[g]->initial_tangent(); });
+    Ki_ = points_->stiffness(true);
     have_Ki_ = true;
   }
   return Ki_;
@@ -78,8 +66,9 @@ const Matrix8& FourNodeQuadUP::solid_stiffness(domain::StiffnessKind kind) {
 
 const Matrix8& FourNodeQuadUP::solid_mass() {
   mass_.setZero();
+  const QuadGaussPoints& gp = points_->points();
   for (int g = 0; g < 4; ++g) {
-    const Eigen::Matrix4d nn = (gp_[g].dvol * materials_[g]->density()) * (gp_[g].N * gp_[g].N.transpose());
+    const Eigen::Matrix4d nn = (gp[g].dvol * points_->material(g).density()) * (gp[g].N * gp[g].N.transpose());
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
         mass_(2 * a, 2 * b) += nn(a, b);
@@ -92,27 +81,24 @@ const Matrix8& FourNodeQuadUP::solid_mass() {
 Vector8 FourNodeQuadUP::solid_force() {
   Vector8 f = Vector8::Zero();
   const domain::Vector2 b = active_body();
+  const QuadGaussPoints& gp = points_->points();
   for (int g = 0; g < 4; ++g) {
-    const Eigen::Vector3d& s = materials_[g]->stress();
-    const double rho = materials_[g]->density();
+    const Eigen::Vector3d& s = points_->material(g).stress();
+    const double rho = points_->material(g).density();
     for (int a = 0; a < 4; ++a) {
-      f[2 * a] += gp_[g].dvol * (gp_[g].dN(0, a) * s[0] + gp_[g].dN(1, a) * s[2] - gp_[g].N[a] * rho * b[0]);
-      f[2 * a + 1] += gp_[g].dvol * (gp_[g].dN(1, a) * s[1] + gp_[g].dN(0, a) * s[2] - gp_[g].N[a] * rho * b[1]);
+      f[2 * a] += gp[g].dvol * (gp[g].dN(0, a) * s[0] + gp[g].dN(1, a) * s[2] - gp[g].N[a] * rho * b[0]);
+      f[2 * a + 1] += gp[g].dvol * (gp[g].dN(1, a) * s[1] + gp[g].dN(0, a) * s[2] - gp[g].N[a] * rho * b[1]);
     }
   }
   return f - pressure_load_;
 }
 
 void FourNodeQuadUP::commit_state() {
-  for (auto& m : materials_) m->commit_state();
+  points_->commit_state();
   update_committed_tangent();
 }
-void FourNodeQuadUP::revert_to_last_commit() {
-  for (auto& m : materials_) m->revert_to_last_commit();
-}
-void FourNodeQuadUP::revert_to_start() {
-  for (auto& m : materials_) m->revert_to_start();
-}
+void FourNodeQuadUP::revert_to_last_commit() { points_->revert_to_last_commit(); }
+void FourNodeQuadUP::revert_to_start() { points_->revert_to_start(); }
 
 std::optional<std::vector<double>> FourNodeQuadUP::response(const std::vector<std::string>& args) {
   if (args.empty()) return std::nullopt;
@@ -127,23 +113,8 @@ std::optional<std::vector<double>> FourNodeQuadUP::response(const std::vector<st
     form_system_matrix({}, k);
     return std::vector<double>(k.data(), k.data() + k.size());
   }
-  if (name == "material" || name == "integrPoint") {
-    if (args.size() < 3) return std::nullopt;
-    const auto point = common::CommandArgs::parse_integer(args[1]);
-    if (!point || *point < 1 || *point > 4) return std::nullopt;
-    return materials_[static_cast<std::size_t>(*point - 1)]->response(args[2]);
-  }
-  if (name == "stress" || name == "stresses" || name == "strain" || name == "strains") {
-    const bool stress = name[3] == 'e';
-    std::vector<double> out;
-    for (const auto& m : materials_) {
-      const Eigen::Vector3d& v = stress ? m->stress() : m->strain();
-      out.insert(out.end(), v.data(), v.data() + 3);
-    }
-    return out;
-  }
   if (name == "minJacobian") return std::vector<double>{min_corner_jacobian()};
-  return std::nullopt;
+  return points_->response(args);
 }
 
 bool FourNodeQuadUP::set_parameter(std::string_view name, double value) {
@@ -153,22 +124,22 @@ bool FourNodeQuadUP::set_parameter(std::string_view name, double value) {
     set_pressure_load();
     return true;
   }
-  bool known = false;
-  for (auto& m : materials_) known = m->set_parameter(name, value) || known;
-  return known;
+  return points_->set_parameter(name, value);
 }
 
-bool FourNodeQuadUP::update_material_stage(int stage) {
-  bool known = false;
-  for (auto& m : materials_) known = m->update_stage(stage) || known;
-  return known;
+bool FourNodeQuadUP::update_material_stage(int stage) { return points_->update_stage(stage); }
+
+bool FourNodeQuadUP::reduce_strength(double factor) {
+  return reduce_material_points_strength(points_->materials(), factor);
 }
 
-bool FourNodeQuadUP::reduce_strength(double factor) { return reduce_material_points_strength(materials_, factor); }
+std::unique_ptr<domain::ElementState> FourNodeQuadUP::save_state() const {
+  return save_material_points(points_->materials());
+}
 
-std::unique_ptr<domain::ElementState> FourNodeQuadUP::save_state() const { return save_material_points(materials_); }
-
-void FourNodeQuadUP::restore_state(const domain::ElementState& state) { restore_material_points(materials_, state); }
+void FourNodeQuadUP::restore_state(const domain::ElementState& state) {
+  restore_material_points(points_->materials(), state);
+}
 
 nlohmann::ordered_json FourNodeQuadUP::to_json() const {
   nlohmann::ordered_json j;

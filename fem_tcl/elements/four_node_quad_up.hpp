@@ -35,7 +35,8 @@ class FourNodeQuadUP final : public UpQuad {
   void revert_to_last_commit() override;
   void revert_to_start() override;
 
-  /// forces (12), stiff (144), stress/stresses and strain/strains (4 x 3), material k <response>, minJacobian.
+  /// forces (12), stiff (144), minJacobian, and the points' (QuadMaterialPoints::response: stress/stresses and
+  /// strain/strains 4 x 3, stress3D, material k <response>).
   std::optional<std::vector<double>> response(const std::vector<std::string>& args) override;
   /// hPerm xPerm vPerm yPerm b1 b2, pressure; else the materials'.
   bool set_parameter(std::string_view name, double value) override;
@@ -55,8 +56,7 @@ class FourNodeQuadUP final : public UpQuad {
  private:
   void set_pressure_load();
 
-  std::array<std::unique_ptr<materials::NDMaterial>, 4> materials_;
-  QuadGaussPoints gp_;
+  std::optional<QuadMaterialPoints> points_;  ///< set in the constructor
   int material_tag_;
   double thickness_;
   double combined_bulk_;

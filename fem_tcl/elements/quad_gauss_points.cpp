@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 
+#include "common/command_args.hpp"
 #include "common/input_error.hpp"
 
 namespace fem::elements {
@@ -65,6 +66,81 @@ Eigen::Matrix<double, 8, 8> quad_stiffness(const QuadGaussPoints& points,
     K.noalias() += points[g].dvol * (B.transpose() * D * B);
   }
   return K;
+}
+
+QuadMaterialPoints::QuadMaterialPoints(const std::array<domain::Node*, 4>& nodes, const materials::NDMaterial& material,
+                                       materials::PlaneType plane, double thickness, const std::string& where) {
+  for (auto& m : materials_) m = material.copy_for(plane);
+  gp_ = quad_gauss_points(nodes, thickness, where);
+}
+
+void QuadMaterialPoints::update(const std::array<domain::Node*, 4>& nodes) {
+  for (int g = 0; g < 4; ++g) {
+    materials::Vector3 eps = materials::Vector3::Zero();
+    for (int a = 0; a < 4; ++a) {
+      const auto u = nodes[a]->solid_disp();
+      eps[0] += gp_[g].dN(0, a) * u[0];
+      eps[1] += gp_[g].dN(1, a) * u[1];
+      eps[2] += gp_[g].dN(0, a) * u[1] + gp_[g].dN(1, a) * u[0];
+    }
+    materials_[g]->set_trial_strain(eps);
+  }
+}
+
+Eigen::Matrix<double, 8, 8> QuadMaterialPoints::stiffness(bool initial) const {
+  return quad_stiffness(gp_, [&](int g) { return initial ? materials_[g]->initial_tangent() : materials_[g]->tangent(); });
+}
+
+void QuadMaterialPoints::commit_state() {
+  for (auto& m : materials_) m->commit_state();
+}
+void QuadMaterialPoints::revert_to_last_commit() {
+  for (auto& m : materials_) m->revert_to_last_commit();
+}
+void QuadMaterialPoints::revert_to_start() {
+  for (auto& m : materials_) m->revert_to_start();
+}
+
+bool QuadMaterialPoints::set_parameter(std::string_view name, double value) {
+  bool any = false;
+  for (auto& m : materials_) any = m->set_parameter(name, value) || any;
+  return any;
+}
+
+bool QuadMaterialPoints::update_stage(int stage) {
+  bool any = false;
+  for (auto& m : materials_) any = m->update_stage(stage) || any;
+  return any;
+}
+
+std::optional<std::vector<double>> QuadMaterialPoints::response(const std::vector<std::string>& args) const {
+  if (args.empty()) return std::nullopt;
+  const std::string& what = args[0];
+  if (what == "stress" || what == "stresses" || what == "strain" || what == "strains") {
+    const bool stress = what.rfind("stress", 0) == 0;
+    std::vector<double> out;
+    out.reserve(12);
+    for (const auto& m : materials_) {
+      const materials::Vector3& v = stress ? m->stress() : m->strain();
+      out.insert(out.end(), v.data(), v.data() + 3);
+    }
+    return out;
+  }
+  if (what == "stress3D" || what == "fullStress") {  // 4 Gauss points x (sxx syy szz sxy syz sxz)
+    std::vector<double> out;
+    out.reserve(24);
+    for (const auto& m : materials_) {
+      const materials::Vector6 v = m->stress_3d();
+      out.insert(out.end(), v.data(), v.data() + 6);
+    }
+    return out;
+  }
+  if ((what == "material" || what == "integrPoint") && args.size() >= 3) {
+    const auto k = common::CommandArgs::parse_integer(args[1]);
+    if (!k || *k < 1 || *k > 4) return std::nullopt;
+    return materials_[static_cast<std::size_t>(*k - 1)]->response(args[2]);
+  }
+  return std::nullopt;
 }
 
 }  // namespace fem::elements

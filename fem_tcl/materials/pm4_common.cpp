@@ -1,6 +1,10 @@
 #include "fem_tcl/materials/pm4_common.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 namespace fem::materials::pm4 {
 
@@ -93,7 +97,17 @@ int strain_substeps(const Vector3& strain_increment, double max_increment) {
     if (std::abs(strain_increment[i]) > std::abs(largest)) largest = strain_increment[i];
   }
   if (!(std::abs(largest) > max_increment)) return 1;
-  return static_cast<int>(std::floor(std::abs(largest) / max_increment)) + 1;
+  // A strain increment of more than kMaxSubsteps sub-steps (10 = 1000 % strain in one step at OpenSees'
+  // 1e-5) is a diverging iteration, not a load step: fail the step (the analysis reverts it) instead of
+  // grinding through billions of sub-steps (found by fuzzing: a 1e9 kN load on a PM4Sand element).
+  constexpr double kMaxSubsteps = 1e6;
+  const double steps = std::floor(std::abs(largest) / max_increment) + 1.0;
+  if (!(steps <= kMaxSubsteps)) {
+    throw common::NumericalError("PM4: a strain increment of " + common::number_text(largest, 4) +
+                                 " in one step (more than 1e6 sub-steps of " + common::number_text(max_increment, 2) +
+                                 "): the iteration diverged");
+  }
+  return static_cast<int>(steps);
 }
 
 }  // namespace fem::materials::pm4

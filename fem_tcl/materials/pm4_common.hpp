@@ -80,7 +80,7 @@ double elastic_fraction_after_unloading(const Vector3& stress, const Vector3& ds
 
 /// The number of equal sub-increments that keep every strain component's increment at or below
 /// `max_increment` (OpenSees MaxStrainInc: floor(max |de_i| / max_increment) + 1 when the largest exceeds it,
-/// else 1).
+/// else 1). Throws common::NumericalError beyond 1e6 sub-steps (a diverged iteration, not a load step).
 int strain_substeps(const Vector3& strain_increment, double max_increment);
 
 }  // namespace fem::materials::pm4

@@ -153,6 +153,9 @@ struct Deck {
   /// The lagged friction strengths of a resumed run (its file's kFrictionMemoryDataset): the nodes listed
   /// start from them, every other node from its instantaneous normal force; empty: all of them.
   std::vector<FrictionMemoryRecord> friction_memory;
+  /// The pore pressure rows of a resumed run's particles (its file's kPorePressureDataset), in `particles`
+  /// order; nullopt when the file has none. Carried unchanged into every output file (resume_extras.hpp).
+  std::optional<std::vector<PorePressureRecord>> particle_pore_pressure;
   Analysis analysis;
   std::optional<BaseAcceleration> base_acceleration;
   std::vector<NodalForce> nodal_forces;

@@ -441,7 +441,7 @@ BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned
   return out;
 }
 
-/// Sorts deck.particles by id, and deck.particle_affine (when given) with them.
+/// Sorts deck.particles by id, and deck.particle_affine and deck.particle_pore_pressure (when given) with them.
 void sort_by_id(Deck& deck) {
   std::vector<std::size_t> order(deck.particles.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -451,6 +451,12 @@ void sort_by_id(Deck& deck) {
   particles.reserve(order.size());
   for (std::size_t k : order) particles.push_back(deck.particles[k]);
   deck.particles = std::move(particles);
+  if (deck.particle_pore_pressure) {
+    std::vector<PorePressureRecord> rows;
+    rows.reserve(order.size());
+    for (std::size_t k : order) rows.push_back((*deck.particle_pore_pressure)[k]);
+    deck.particle_pore_pressure = std::move(rows);
+  }
   if (deck.particle_affine.empty()) return;
   std::vector<std::array<double, 4>> affine;
   affine.reserve(order.size());

@@ -293,6 +293,30 @@ std::optional<std::vector<FrictionMemoryRecord>> read_friction_memory_dataset(co
   return memory;
 }
 
+void write_pore_pressure_dataset(std::int64_t file_id, std::span<const PorePressureRecord> rows, const std::string& shown) {
+  std::vector<double> values;
+  values.reserve(3 * rows.size());
+  for (const PorePressureRecord& r : rows) values.insert(values.end(), {r.pressure, r.sigma_v0, r.ru});
+  write_rows(file_id, kPorePressureDataset, values.data(), rows.size(), 3, shown);
+}
+
+std::optional<std::vector<PorePressureRecord>> read_pore_pressure_dataset(const std::filesystem::path& file,
+                                                                         std::size_t rows) {
+  const auto values = read_rows<3>(file, kPorePressureDataset, rows,
+                                   std::to_string(rows) + " x 3 floats (p, sigma'v0, r_u per particle of /table)");
+  if (!values) return std::nullopt;
+  std::vector<PorePressureRecord> out;
+  out.reserve(values->size());
+  for (std::size_t k = 0; k < values->size(); ++k) {
+    const auto& [p, sigma_v0, ru] = (*values)[k];
+    if (!std::isfinite(p) || !std::isfinite(sigma_v0) || !std::isfinite(ru))
+      throw common::InputError(file.string(), "dataset \"/" + std::string(kPorePressureDataset) + "\" row " +
+                                                  std::to_string(k) + ": expected finite p, sigma'v0 and r_u");
+    out.push_back({p, sigma_v0, ru});
+  }
+  return out;
+}
+
 std::string particle_file_name(long long step, long long nsteps) {
   const int digits = nsteps > 0 ? static_cast<int>(std::log10(static_cast<double>(nsteps))) + 1 : 1;
   char buffer[64];

@@ -95,6 +95,30 @@ void write_friction_memory_dataset(std::int64_t file_id, std::span<const Frictio
 /// is negative or a mass not positive (or either not finite).
 std::optional<std::vector<FrictionMemoryRecord>> read_friction_memory_dataset(const std::filesystem::path& file);
 
+/// The pore pressure state of each particle at the FEM -> MPM transfer of a u-p model (fem2mpm --pore-pressure;
+/// this project's extension beside "/table", which CB-Geo's reader ignores): a 2-D float64 dataset of rows x 3
+/// columns, row k for particle k of "/table": the pore pressure p and the reference vertical effective stress
+/// sigma'v0 (Pa, both compression positive) and the excess pore pressure ratio r_u = (p - p0) / sigma'v0.
+/// mpm reads it on resume and writes it into every output file, each particle keeping its transfer-time row.
+inline constexpr const char* kPorePressureDataset = "pore_pressure";
+
+/// One row of kPorePressureDataset.
+struct PorePressureRecord {
+  double pressure = 0;  ///< p, Pa, compression positive
+  double sigma_v0 = 0;  ///< sigma'v0, Pa, compression positive
+  double ru = 0;        ///< r_u, -
+  bool operator==(const PorePressureRecord&) const = default;
+};
+
+/// Writes kPorePressureDataset (rows x 3; zero rows is a dataset too) into the open HDF5 file `file_id`.
+/// Throws std::runtime_error naming `shown` on failure.
+void write_pore_pressure_dataset(std::int64_t file_id, std::span<const PorePressureRecord> rows, const std::string& shown);
+
+/// Reads kPorePressureDataset from `file`: std::nullopt when the file has none; common::InputError naming the
+/// file (and the row) when it is not `rows` x 3 floats or a value is not finite.
+std::optional<std::vector<PorePressureRecord>> read_pore_pressure_dataset(const std::filesystem::path& file,
+                                                                         std::size_t rows);
+
 /// What a particle file carries beside CB-Geo's "/table" for a bit-for-bit resume: the APIC matrices
 /// (empty unless the transfer is APIC: none written) and the lagged friction strengths (none without a
 /// normal_lag; with one, written even when no node holds a memory).

@@ -14,6 +14,7 @@
 
 #include "common/atomic_file.hpp"
 #include "mpm/io/particle_fields.hpp"
+#include "mpm/io/resume_extras.hpp"
 #include "mpm/io/vtk_files.hpp"
 
 namespace mpm::io {
@@ -267,6 +268,8 @@ void ResultsWriter::write_particles(long long step, double time, std::span<const
     write_xdmf_datasets(static_cast<hid_t>(id), particles, deck_.grid, file.string());
     if (!extras.affine.empty()) write_affine_dataset(id, extras.affine, file.string());
     if (extras.friction_memory) write_friction_memory_dataset(id, *extras.friction_memory, file.string());
+    if (deck_.particle_pore_pressure)
+      write_pore_pressure_dataset(id, carried_pore_pressure(deck_, particles), file.string());
   });
   add_frame({step, time, particles.size(), file.filename().string()}, particles);
 }

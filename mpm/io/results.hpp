@@ -73,7 +73,8 @@ class ResultsWriter {
   void write_start(double time, std::span<const ParticleRecord> particles);
   /// An output step: particles<step>.h5 (unless Output::particle_output_steps leaves it out), then
   /// particles.xdmf and series.csv rewritten. `extras` go beside the file's "/table" (the APIC matrices,
-  /// one per record in the same order, and the lagged friction strengths; particle_table.hpp).
+  /// one per record in the same order, and the lagged friction strengths; particle_table.hpp), and so do the
+  /// resumed particles' pore pressure rows when the deck has them (resume_extras.hpp carried_pore_pressure).
   void write_output(long long step, double time, double dt, std::span<const ParticleRecord> particles,
                     const ParticleFileExtras& extras = {});
   /// A series.csv row only (the last step of a run when it is not an output step).

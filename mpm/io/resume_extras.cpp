@@ -1,6 +1,7 @@
 #include "mpm/io/resume_extras.hpp"
 
 #include <set>
+#include <stdexcept>
 
 #include "common/input_error.hpp"
 
@@ -41,12 +42,32 @@ void read_resume_friction_memory(const std::filesystem::path& file, const std::s
   deck.friction_memory = std::move(*memory);
 }
 
+void read_resume_pore_pressure(const std::filesystem::path& file, Deck& deck) {
+  deck.particle_pore_pressure = read_pore_pressure_dataset(file, deck.particles.size());
+}
+
 }  // namespace
 
 void read_resume_extras(const std::filesystem::path& file, const std::string& shown, const std::string& rshown,
                         Deck& deck) {
   read_resume_affine(file, rshown, deck);
   read_resume_friction_memory(file, shown, rshown, deck);
+  read_resume_pore_pressure(file, deck);
+}
+
+std::vector<PorePressureRecord> carried_pore_pressure(const Deck& deck, std::span<const ParticleRecord> particles) {
+  std::vector<PorePressureRecord> rows;
+  if (!deck.particle_pore_pressure) return rows;
+  const auto& all = *deck.particle_pore_pressure;
+  rows.reserve(particles.size());
+  std::size_t k = 0;  // both sorted by id: one merge pass
+  for (const ParticleRecord& p : particles) {
+    while (k < deck.particles.size() && deck.particles[k].id < p.id) ++k;
+    if (k == deck.particles.size() || deck.particles[k].id != p.id)
+      throw std::logic_error("carried_pore_pressure: particle " + std::to_string(p.id) + " is not in the resumed deck");
+    rows.push_back(all[k]);
+  }
+  return rows;
 }
 
 }  // namespace mpm::io

@@ -2,7 +2,9 @@
 // What a resumed run reads from its particle file beside CB-Geo's "/table": the APIC matrices and the
 // lagged friction strengths (particle_table.hpp), without which it does not continue bit for bit.
 #include <filesystem>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "mpm/io/deck.hpp"
 
@@ -16,7 +18,14 @@ namespace mpm::io {
 ///   whose node has no lagged friction constraint is a common::InputError naming the file and row. A
 ///   file without it restarts the memory from the instantaneous normal forces, with a warning; decks
 ///   without a lag ignore the dataset.
+/// - deck.particle_pore_pressure from kPorePressureDataset when the file has it (a u-p transfer's p, sigma'v0
+///   and r_u; one row per particle, finite values: else a common::InputError naming the file and row).
 void read_resume_extras(const std::filesystem::path& file, const std::string& shown, const std::string& rshown,
                         Deck& deck);
+
+/// The pore pressure rows of `particles` (a state sorted by id, as Simulation::snapshot gives it; particles
+/// are only ever removed) from deck.particle_pore_pressure (sorted with deck.particles by id): each particle
+/// keeps its transfer-time row. Empty when the deck has none.
+std::vector<PorePressureRecord> carried_pore_pressure(const Deck& deck, std::span<const ParticleRecord> particles);
 
 }  // namespace mpm::io

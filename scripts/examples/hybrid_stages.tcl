@@ -113,6 +113,17 @@ proc advance_to {tend dt label} {
     return $t
 }
 
+# advance_to in chunks that end on the multiples of drec (the recorders' -dT), so that the rows of a `-dT drec`
+# recorder land on those times even where steps are halved (hybrid_run.py transfers at a recorded time).
+proc advance_recorded {tend dt drec label} {
+    set k [expr {int(floor([getTime] / $drec + 1e-9)) + 1}]
+    while {[getTime] < $tend - 1e-9} {
+        set t [advance_to [expr {min($k * $drec, $tend)}] $dt $label]
+        incr k
+    }
+    return [getTime]
+}
+
 # `-key value` options into the array named arr (whose defaults it holds); errors name the script.
 proc parse_options {script arr words} {
     upvar $arr opt

@@ -105,10 +105,20 @@ def fem2mpm_command(bins, fem_dir, out, t_transfer, options=()):
             "--time", "%.10g" % t_transfer, "--out", out] + list(options)
 
 
+# fem2mpm's options that need the pore pressures (bridge/README.md): with any of them the pore-pressure
+# file the FEM run will write is part of the check
+UP_OPTIONS = ("--liquefied", "--liquefied-table", "--residual-ratio", "--residual-n160cs", "--void-redistribution",
+              "--liquefied-softening", "--reference-time", "--strain", "--pp-nodes", "--strength-step",
+              "--max-liquefied-materials")
+
+
 def check_fem2mpm_options(bins, fem_dir, out, t_transfer, options=()):
     """fem2mpm --check-options with the options run_fem2mpm will get: a bad option fails before the FEM
-    analysis (raises PipelineError with fem2mpm's one-line message), not after it."""
+    analysis (raises PipelineError with fem2mpm's one-line message), not after it. The FEM files (and the
+    pore-pressure file of a u-p model, given when a u-p option asks for it) need not exist yet."""
     cmd = fem2mpm_command(bins, fem_dir, out, t_transfer, options) + ["--check-options"]
+    if any(w.split("=", 1)[0] in UP_OPTIONS for w in options) and "--pore-pressure" not in options:
+        cmd += ["--pore-pressure", os.path.join(fem_dir, "pp.out")]
     r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace")
     if r.returncode != 0:
         last = [ln for ln in r.stderr.splitlines() if ln.strip()]

@@ -415,8 +415,8 @@ def case_mpm(rng, folder: Path, bins: Path, seeds, timeout):
 
 def add_resume_extras(folder: Path, h5: Path, rng):
     """The datasets mpm reads beside /table (mpm/io/resume_extras.hpp), with the deck keys that make it read
-    them: /friction_memory for a lagged base friction on node set 0, /apic_affine for the APIC transfer; each
-    of a valid shape with odd values, or of an odd shape or type."""
+    them: /friction_memory for a lagged base friction on node set 0, /apic_affine for the APIC transfer, and
+    /pore_pressure (read whenever present); each of a valid shape with odd values, or of an odd shape or type."""
     import h5py
     import numpy as np
     deck = json.loads((folder / "mpm.json").read_text())
@@ -433,8 +433,10 @@ def add_resume_extras(folder: Path, h5: Path, rng):
     with h5py.File(h5, "r+") as f:
         rows = len(f["table"])
         shapes = {"friction_memory": [(rng.choice([0, 1, 3, 9]), 3), (2, 2), (3,), (1, 4)],
-                  "apic_affine": [(rows, 4), (rows + 1, 4), (rows, 3), (rows,)]}
-        for name in (["friction_memory"] + (["apic_affine"] if apic else [])):
+                  "apic_affine": [(rows, 4), (rows + 1, 4), (rows, 3), (rows,)],
+                  "pore_pressure": [(rows, 3), (rows - 1, 3), (rows, 4), (rows,)]}
+        for name in (["friction_memory"] + (["apic_affine"] if apic else []) +
+                     (["pore_pressure"] if rng.random() < 0.5 else [])):
             shape = rng.choice(shapes[name]) if rng.random() < 0.3 else shapes[name][0]
             data = np.zeros(shape)
             if name == "friction_memory" and len(shape) == 2 and shape[1] == 3:

@@ -78,7 +78,7 @@ TEST(FemModel, RejectsUnsupportedElementAndUnknownNode) {
     FAIL() << "expected an InputError";
   } catch (const common::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("m.json"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("'bbarQuad' (expected SSPquad, FourNodeQuad/quad or Tri31)"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("'bbarQuad' (expected SSPquad, FourNodeQuad/quad, Tri31, SSPquadUP or FourNodeQuadUP)"), std::string::npos)
         << e.what();
   }
   // Tri31 takes three nodes, and only three.
