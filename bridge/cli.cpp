@@ -531,6 +531,9 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--max-liquefied-materials", o.up.max_liquefied_materials,
                  "at most this many liquefied materials from --residual-ratio / --residual-n160cs (the grid step is widened)")
       ->capture_default_str()->group(up_group);
+  app.add_flag("--effective-friction", o.up.effective_friction,
+               "the particles below the threshold: their drained friction on the effective stress of the transfer, "
+               "tan(phi) = (1 - p / sigma_m) tan(phi') (default: phi' on the total stress)")->group(up_group);
   app.add_flag("--check-options", o.check_options,
                "check the options (and the --ground-motion record) and stop, before reading the FEM files: "
                "a driver runs this before the FEM analysis")->group("Inputs");

@@ -97,11 +97,15 @@ LiquefactionReport make_liquefaction_report(const TransferState& state, std::spa
     }
   }
   const std::set<unsigned> liquefied(strength.materials.begin(), strength.materials.end());
+  const std::set<unsigned> effective(strength.effective_materials.begin(), strength.effective_materials.end());
   for (const auto& m : state.materials) {
     LiquefactionReport::MaterialCount c{m.id, "", count[m.id], mass[m.id]};
     if (liquefied.count(m.id)) {
       c.text = m.origin;
       r.liquefied_materials.push_back(c);
+    } else if (effective.count(m.id)) {
+      c.text = m.origin + ": " + material_text(m);
+      r.drained.push_back(c);
     } else {
       c.text = "FEM material '" + m.fem_name + "': " + material_text(m);
       r.drained.push_back(c);
@@ -131,6 +135,7 @@ std::string liquefaction_text(const LiquefactionReport& r) {
   for (const auto& c : r.drained)
     s += "  material " + std::to_string(c.id) + " (below the threshold): " + c.text + "; " + std::to_string(c.particles) +
          " particles\n";
+  if (!r.strength.effective_friction.empty()) s += "  effective friction (--effective-friction): " + r.strength.effective_friction + "\n";
   s += "  liquefied strength: " + r.strength.rule + "\n";
   for (const auto& c : r.liquefied_materials)
     s += "  material " + std::to_string(c.id) + ": " + c.text + "; " + std::to_string(c.particles) + " particles, " +
@@ -155,6 +160,7 @@ nlohmann::ordered_json liquefaction_json(const LiquefactionReport& r) {
                     {"at", {r.max_depth_x, r.max_depth_y}}};
   j["no_reference_particles"] = r.no_reference;
   j["strength_rule"] = r.strength.rule;
+  j["effective_friction"] = r.strength.effective_friction;
   auto list = [](const std::vector<LiquefactionReport::MaterialCount>& v) {
     nlohmann::ordered_json a = nlohmann::ordered_json::array();
     for (const auto& c : v) a.push_back({{"id", c.id}, {"material", c.text}, {"particles", c.particles}, {"mass", c.mass}});

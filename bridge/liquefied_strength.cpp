@@ -141,6 +141,71 @@ void check_liquefied_options(const LiquefiedOptions& o) {
   if (o.max_materials < 1) throw common::InputError("--max-liquefied-materials", "expected at least 1");
 }
 
+namespace {
+
+/// --effective-friction (liquefied_strength.hpp): the particles at or below the threshold whose material is
+/// frictional get tan(phi_eq) = (1 - p / sigma_m) tan(phi'), rounded to a geometric grid (--strength-step,
+/// widened to at most max_materials values), one material per FEM material and grid value.
+void apply_effective_friction(TransferState& state, std::span<mpm::io::ParticleRecord> particles,
+                              std::span<const mpm::io::PorePressureRecord> rows, const LiquefiedOptions& o,
+                              LiquefiedSummary& out) {
+  using Key = std::tuple<unsigned, long long>;
+  std::vector<double> tan_eq(particles.size(), 0.0);
+  std::size_t reduced = 0;
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    const mpm::io::ParticleRecord& r = particles[k];
+    const MpmMaterial& m = state.materials[r.material_id];
+    if (rows[k].ru > o.threshold || m.type != MpmMaterial::Type::MohrCoulomb2D || !(m.friction > 0)) continue;
+    const double sigma_m = -(r.stress_xx + r.stress_yy + r.stress_zz) / 3.0;  // total, compression positive
+    const double p = rows[k].pressure;
+    if (!(p > 0) || !(sigma_m > 0)) continue;
+    tan_eq[k] = std::max(1.0 - p / sigma_m, 1e-3) * std::tan(m.friction);  // p >= sigma_m: a nearly frictionless particle
+    ++reduced;
+  }
+  double log_step = std::log1p(o.strength_step);
+  const auto distinct = [&](double step) {
+    std::set<Key> keys;
+    for (std::size_t k = 0; k < particles.size(); ++k)
+      if (tan_eq[k] > 0) keys.insert({particles[k].material_id, std::llround(std::log(tan_eq[k]) / step)});
+    return keys.size();
+  };
+  while (distinct(log_step) > o.max_materials) log_step *= 1.25;
+  std::map<Key, unsigned> id_of;
+  for (std::size_t k = 0; k < particles.size(); ++k) {
+    if (!(tan_eq[k] > 0)) continue;
+    mpm::io::ParticleRecord& r = particles[k];
+    const long long grid = std::llround(std::log(tan_eq[k]) / log_step);
+    const Key key{r.material_id, grid};
+    auto it = id_of.find(key);
+    if (it == id_of.end()) {
+      const MpmMaterial& src = state.materials[r.material_id];
+      MpmMaterial m = src;
+      m.id = static_cast<unsigned>(state.materials.size());
+      m.friction = std::atan(std::exp(static_cast<double>(grid) * log_step));
+      m.dilation = std::min(m.dilation, m.friction);
+      m.origin = "particles of FEM material '" + src.fem_name + "' below the threshold with their pore pressure " +
+                 "(--effective-friction): phi " + fmt(m.friction * 180.0 / M_PI, 4) + " deg from " +
+                 fmt(src.friction * 180.0 / M_PI, 4) + " deg, c " + kpa(m.cohesion);
+      it = id_of.emplace(key, m.id).first;
+      out.effective_materials.push_back(m.id);
+      state.materials.push_back(std::move(m));
+    }
+    r.material_id = it->second;
+    const MpmMaterial& m = state.materials[it->second];
+    const Stress6 s{r.stress_xx, r.stress_yy, r.stress_zz, r.tau_xy, r.tau_yz, r.tau_xz};
+    const double pd = r.svars[6];
+    r.nstate_vars = mohr_coulomb_state(m, s, r.svars);
+    r.svars[6] = pd;
+  }
+  out.effective_friction = "the " + std::to_string(reduced) + " frictional particles at or below the threshold with a pore " +
+                           "pressure: tan(phi) = (1 - p / sigma_m) tan(phi') on the total stress (the pore pressure of the " +
+                           "transfer held; Bishop & Morgenstern 1960), rounded to a grid of step " +
+                           fmt(100 * std::expm1(log_step), 3) + " %: " + std::to_string(out.effective_materials.size()) +
+                           " materials";
+}
+
+}  // namespace
+
 LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::io::ParticleRecord> particles,
                                            std::span<const mpm::io::PorePressureRecord> rows,
                                            std::span<const double> shear_strain, const LiquefiedOptions& o) {
@@ -290,6 +355,7 @@ LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::
     r.svars[2] = softened_cohesion(m, pd);
     if (m.softening && pd > m.softening->peak_pdstrain) ++out.softened_at_start;
   }
+  if (o.effective_friction) apply_effective_friction(state, particles, rows, o, out);
   return out;
 }
 

@@ -21,6 +21,13 @@
 // softening to Sr between E1 and E2 (default none). A particle's equivalent deviatoric strain since the
 // reference state (pore_pressure.hpp, --strain) starts its softening (svars pdstrain, and its cohesion the
 // softened one there, as mpm's MohrCoulomb computes it); without --strain it starts at 0.
+// --effective-friction: the particles below the threshold keep their FEM material's drained friction angle on
+// their effective stress at the transfer, as a slope-stability analysis with a pore-pressure ratio does
+// (Bishop & Morgenstern 1960, Geotechnique 10(4) 129-150): MPM carries the total stress and no pore pressure,
+// so a particle with pore pressure p and total mean stress sigma_m (compression positive) gets
+// tan(phi_eq) = (1 - p / sigma_m) tan(phi') (the pore pressure of the transfer held); without it they keep
+// phi' on the total stress (the and the authors' choice), which counts the pore pressure as contact
+// stress. tan(phi_eq) is rounded to the same kind of grid as Sr, one material per FEM material and value.
 // Particles of equal strength share one MPM material: rule (a) one per FEM material and bin; rules (b) and
 // (c) Sr rounded to a geometric grid of relative step --strength-step (default 0.05: within 2.5 % of each
 // particle's Sr), one material per FEM material and grid value, the step widened until there are at most
@@ -74,8 +81,11 @@ struct LiquefiedOptions {
   double peak_factor = 1, pd_peak = 0, pd_residual = 0;
   double strength_step = 0.05;  ///< relative step of the Sr grid (rules Ratio and Penetration)
   /// At most this many liquefied materials of rules Ratio and Penetration: the grid's step is widened (by
-  /// factors of 1.25 in log) until the particles' strengths fall on at most this many grid values.
+  /// factors of 1.25 in log) until the particles' strengths fall on at most this many grid values. The same
+  /// bound applies, separately, to the materials of --effective-friction.
   std::size_t max_materials = 20;
+  /// --effective-friction: the friction of the particles below the threshold reduced by their pore pressure.
+  bool effective_friction = false;
 };
 
 /// Checks the options alone (threshold finite, ratio > 0, factor >= 1, strain range, step in (0, 1]); throws
@@ -88,6 +98,8 @@ struct LiquefiedSummary {
   std::size_t liquefied = 0;        ///< particles with r_u > threshold
   std::size_t softened_at_start = 0;///< liquefied particles that start past their peak strain (--strain)
   std::vector<unsigned> materials;  ///< ids of the liquefied materials made (state.materials), in id order
+  std::string effective_friction;   ///< --effective-friction: what it did, one line ("" without it)
+  std::vector<unsigned> effective_materials;  ///< ids of its materials, in id order
   std::vector<std::string> warnings;
 };
 

@@ -25,6 +25,7 @@ LiquefiedOptions liquefied_options(const UpOptionText& o) {
   lo.threshold = o.liquefied;
   lo.strength_step = o.strength_step;
   lo.max_materials = o.max_liquefied_materials;
+  lo.effective_friction = o.effective_friction;
   const int rules = int{!o.liquefied_table.empty()} + int{o.residual_ratio.has_value()} + int{!o.n160cs.empty()};
   if (rules > 1)
     throw common::InputError("--liquefied-table", "give one residual strength rule: --liquefied-table, --residual-ratio or "

@@ -19,12 +19,14 @@ struct UpOptionText {
   std::size_t max_liquefied_materials = 20;
   std::string void_redistribution = "significant";
   std::vector<double> liquefied_softening;  ///< K E1 E2, or empty
+  bool effective_friction = false;
 };
 
 /// The options that mean nothing without --pore-pressure (an error names the one given).
-inline constexpr std::array<const char*, 11> kUpOptionsNeedingPorePressure = {
+inline constexpr std::array<const char*, 12> kUpOptionsNeedingPorePressure = {
     "--pp-nodes", "--reference-time", "--strain", "--liquefied", "--liquefied-table", "--residual-ratio",
-    "--residual-n160cs", "--void-redistribution", "--liquefied-softening", "--strength-step", "--max-liquefied-materials"};
+    "--residual-n160cs", "--void-redistribution", "--liquefied-softening", "--strength-step", "--max-liquefied-materials",
+    "--effective-friction"};
 
 /// nullopt without --pore-pressure; else the file, --pp-nodes parsed, --reference-time checked (finite), --strain.
 /// Throws common::InputError naming the option.

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 // Reimplemented from OpenSees' PM4Sand.cpp (commit 2890cb36). The manual's equations are cited by section of
 // Boulanger & Ziotopoulou (2017), Report UCD/CGM-17/01 ("the manual"); OpenSees' function names are given where
@@ -56,16 +56,10 @@ using pm4::macaulay;
 using pm4::mean_stress;
 using pm4::norm;
 
-constexpr double kPi = 3.14159265359;      // the value OpenSees' PM4Sand uses for phi_cv -> Mc
 constexpr double kOneThird = 1.0 / 3.0;
 constexpr double kTwoThirds = 2.0 / 3.0;
 
-std::string number_text(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
+std::string number_text(double v) { return common::number_text(v, 10); }
 
 }  // namespace
 
@@ -106,62 +100,25 @@ PM4SandParameters resolve_parameters(const PM4SandParameters& given, const std::
   p.m = or_default(given.m, 0.01);
   p.Fsed_min = std::min(or_default(given.Fsed_min, 0.03 * std::exp(2.6 * Dr)), 0.99);
   p.p_sedo = or_default(given.p_sedo, p.P_atm / 5.0);
-  p.scheme = given.scheme < 0 ? 5 : given.scheme;
-  check(p.scheme >= 1 && p.scheme <= 5,
-        "IntScheme: expected 1 (modified Euler), 2 (forward Euler), 3 (Runge-Kutta 4), 4 or 5 (forward / modified "
-        "Euler with at most 1e-5 strain per sub-step), got " + std::to_string(given.scheme));
-  p.tangent_type = given.tangent_type < 0 ? 0 : given.tangent_type;
-  check(p.tangent_type >= 0 && p.tangent_type <= 2,
-        "TanType: expected 0 (elastic), 1 or 2 (elastic matrix of the last commit), got " + std::to_string(given.tangent_type));
-  p.tol_f = or_default(given.tol_f, 1e-8);
-  p.tol_r = or_default(given.tol_r, 1e-8);
-  check(p.tol_f > 0.0, "TolF: expected TolF > 0, got " + number_text(given.tol_f));
-  check(p.tol_r > 0.0, "TolR: expected TolR > 0, got " + number_text(given.tol_r));
+  pm4::resolve_integration_options(p.scheme, p.tangent_type, p.tol_f, p.tol_r, 1e-8, 1e-8, where);
   return p;
 }
 
 // --- construction, copies -----------------------------------------------------------------------------------
 
-// OpenSees' constructor and initialize(): zero stress, the moduli at p = P_atm, p_min = P_atm / 200.
-PM4Sand::PM4Sand(int tag, const PM4SandParameters& given) : NDMaterial(tag) {
-  params_ = resolve_parameters(given, where());
-  Mc_ = 2.0 * std::sin(params_.phi_cv / 180.0 * kPi);
+// OpenSees' constructor and initialize(): zero stress, the moduli at p = P_atm, p_min = P_atm / 200 (and the
+// dilatancy cut-off's 5 p_min until the first initialisation). PM4Sand.cpp's driver is pm4::Variant's default: the
+// void ratio before the elastic check, RK4 as is.
+PM4Sand::PM4Sand(int tag, const PM4SandParameters& given)
+    : Material(tag, "PM4Sand", "G0", resolve_parameters(given, "nDMaterial PM4Sand " + std::to_string(tag)),
+               pm4::Variant{}) {
   e_init_ = params_.emax - (params_.emax - params_.emin) * params_.Dr;
-  p_min_ = params_.P_atm / 200.0;
   p_min2_ = p_min_ * 5.0;
-  History& h = committed_.history;
-  Carried& c = committed_.carried;
-  h.void_ratio = e_init_;
-  h.z_peak = params_.z_max / 100000.0;
-  c.Mb = c.Md = Mc_;  // OpenSees leaves them unset until the first initialisation
-  elastic_moduli_plain(Vector3(params_.P_atm, params_.P_atm, 0.0), c.K, c.G);
-  c.ce = c.cep = pm4::elastic_stiffness(c.K, c.G);
-  trial_ = committed_;
-  publish();
+  start(e_init_);
 }
 
-std::unique_ptr<NDMaterial> PM4Sand::copy_for(PlaneType plane) const {
-  if (plane != PlaneType::PlaneStrain)
-    throw common::InputError(where(), "PM4Sand is a plane-strain (2D) model: it has no plane-stress form");
-  // OpenSees getCopy: a new material from the current parameters (e0 again from Dr, PostShake off), fresh state;
-  // the stage is the parent's (OpenSees' stage flag is shared by all PM4Sand materials).
-  auto copy = std::make_unique<PM4Sand>(tag(), params_);
-  copy->stage_ = stage_;
-  return copy;
-}
-
-void PM4Sand::publish() {
-  const History& t = trial_.history;
-  stress_ = -(t.stress + t.stress_offset);
-  strain_ = -t.strain;
-  tangent_ = params_.tangent_type == 0 ? trial_.carried.ce : trial_.carried.cep;
-}
-
-Vector6 PM4Sand::stress_3d() const {
-  Vector6 s = Vector6::Zero();
-  s << stress_[0], stress_[1], 0.5 * (stress_[0] + stress_[1]), stress_[2], 0.0, 0.0;
-  return s;
-}
+// OpenSees getCopy: a new material from the current parameters (e0 again from Dr, PostShake off), fresh state.
+std::unique_ptr<PM4Sand::Material> PM4Sand::fresh_copy() const { return std::make_unique<PM4Sand>(tag(), params_); }
 
 // --- the model ----------------------------------------------------------------------------------------------
 
@@ -172,18 +129,10 @@ double PM4Sand::state_parameter(double Dr, double p) const {
   return params_.R / (params_.Q - std::log(100.0 * pn / params_.P_atm)) - Dr;
 }
 
-// G = G0 P_atm (stage 0) or G0 P_atm sqrt(p / P_atm) (OpenSees' GetElasticModuli, 3-argument form, used by the
-// elastic stage); K = 2 (1 + nu) / (3 (1 - 2 nu)) G.
-void PM4Sand::elastic_moduli_plain(const Vector3& stress, double& K, double& G) const {
-  double pn = mean_stress(stress);
-  if (pn <= p_min_) pn = p_min_;
-  G = stage_ == 0 ? params_.G0 * params_.P_atm : params_.G0 * params_.P_atm * std::sqrt(pn / params_.P_atm);
-  K = pm4::bulk_modulus(G, params_.nu);
-}
-
-// The elastic stage recomputes G0 P_atm and K from the committed stress (OpenSees' elastic_integrator).
+// The elastic stage recomputes G0 P_atm and K from the committed stress (OpenSees' elastic_integrator, with the
+// 3-argument GetElasticModuli: pm4::Material::plain_moduli).
 void PM4Sand::elastic_stage_moduli(const Vector3& committed_stress, double& K, double& G) {
-  elastic_moduli_plain(committed_stress, K, G);
+  plain_moduli(committed_stress, K, G);
 }
 
 // Manual section 2, "Elastic moduli": G = G0 P_atm sqrt(p / P_atm) C_SR (1 + z_cum / z_max) / (1 + C_GD z_cum / z_max),
@@ -310,22 +259,10 @@ PM4Sand::Hardening PM4Sand::state_dependent(const Vector3& stress, const Vector3
 // reported stress, hence the equilibrium, is unchanged); a p below p_min is raised to p_min the same way.
 void PM4Sand::initialize(const Vector3& stress) {
   const Vector3 initial = stress;
-  trial_.history = committed_.history;  // an uncommitted trial is dropped
-  History& t = trial_.history;
-  Carried& c = trial_.carried;
-  double p0 = mean_stress(initial);
-  p_min_ = std::max(p0 / 200.0, params_.P_atm / 200.0);
+  p_min_ = std::max(mean_stress(initial) / 200.0, params_.P_atm / 200.0);
   p_min2_ = p_min_ * 10.0;
-  if (p0 < p_min_) {
-    t.stress = p_min_ * identity();
-    t.stress_offset = initial - t.stress;
-    p0 = p_min_;
-    t.alpha.setZero();
-  } else {
-    t.stress = initial;
-    t.stress_offset.setZero();
-    t.alpha = deviator(initial) / p0;
-  }
+  const double p0 = begin_initialization(initial, p_min_);
+  Carried& c = trial_.carried;
   const double xi = state_parameter(params_.Dr, p0);
   if (params_.z_max < 0.0) params_.z_max = std::min(0.7 * std::exp(-6.1 * xi), 20.0);
   if (xi < 0.0) {
@@ -339,194 +276,28 @@ void PM4Sand::initialize(const Vector3& stress) {
     c.Md = Mc_ * std::exp(params_.nd * 4.0 * xi);
     if (params_.Ado < 0.0) params_.Ado = 1.24;
   }
-  const double M_cut = std::max(c.Mb, c.Md);
-  const double M_in = std::sqrt(2.0) * norm(deviator(t.stress)) / p0;
-  if (M_in > M_cut) {
-    const Vector3 r = (t.stress - p0 * identity()) / p0 * M_cut / M_in;
-    t.stress = p0 * identity() + r * p0;
-    t.stress_offset = initial - t.stress;
-    t.alpha = r * (M_cut - params_.m) / M_cut;
-  }
-  t.z_cum = 0.0;
-  elastic_moduli(t.stress, c.K, c.G);
-  c.ce = c.cep = pm4::elastic_stiffness(c.K, c.G);
-  c.Kp = 100.0 * c.G;
-  t.alpha_in.setZero();
-  t.alpha_in_p.setZero();
-  t.alpha_in_true = t.alpha_in_max = t.alpha_in_min = t.alpha;
-  t.fabric.setZero();
-  t.fabric_in.setZero();
-  t.z_peak = params_.z_max / 100000.0;
-  c.p_zp = std::max(p0, p_min_) / 100.0;
-  c.z_xp = 0.0;
-  c.p_zp_unset = true;
-  committed_ = trial_;
-  publish();
+  cap_initial_stress_ratio(initial, p0);
+  finish_initialization(p0, Vector3::Zero());  // alpha_in = 0
 }
 
-// --- the stress update ----------------------------------------------------------------------------------------
+// --- JSON, the command ---------------------------------------------------------------------------------------
 
-// The shared explicit integration (pm4_integration.hpp, OpenSees integrate() and its integrators) with PM4Sand's
-// moduli and surfaces.
-pm4::Settings PM4Sand::settings() const {
-  pm4::Settings s;
-  s.scheme = static_cast<pm4::Scheme>(params_.scheme);
-  s.m = params_.m;
-  s.tol_f = params_.tol_f;
-  s.cz = params_.cz;
-  s.z_max = params_.z_max;
-  s.Mc = Mc_;
-  s.p_min = p_min_;
-  s.e_init = e_init_;
-  s.variant = pm4::Variant{};  // PM4Sand.cpp: the void ratio first, RK4 as is
-  return s;
-}
-
-void PM4Sand::set_trial_strain(const Vector3& strain) {
-  trial_.history = committed_.history;  // the carried members stay as the last trial left them (quirk 6)
-  trial_.history.strain = -strain;
-  pm4::integrate(*this, settings(), stage_, trial_, committed_.history);
-  publish();
-}
-
-// --- commit / revert ------------------------------------------------------------------------------------------
-
-// OpenSees commitState: the moduli at the new stress; in stage 1 a stress ratio beyond Mb is scaled back onto the
-// bounding surface (alpha onto its image); z_cum += |dz| / sqrt(2), z_peak = max(z_peak, |z| / sqrt(2)).
-void PM4Sand::commit_state() {
-  History& t = trial_.history;
-  Carried& c = trial_.carried;
-  elastic_moduli(t.stress, c.K, c.G);
-  if (c.Mcur > c.Mb && stage_ != 0) {
-    const double p = mean_stress(t.stress);
-    const Vector3 r = deviator(t.stress) * (c.Mb / c.Mcur / p);
-    t.stress = p * identity() + r * p;
-    t.alpha = r * (c.Mb - params_.m) / c.Mb;
-  }
-  pm4::commit_history(settings(), trial_, committed_.history);  // z_cum, z_peak, e, ce; cep = ce (quirk 9)
-  committed_ = trial_;
-  publish();
-}
-
-void PM4Sand::revert_to_last_commit() {
-  trial_ = committed_;
-  publish();
-}
-
-void PM4Sand::revert_to_start() { initialize(trial_.history.stress); }
-
-// --- commands -------------------------------------------------------------------------------------------------
-
-bool PM4Sand::update_stage(int stage) {
-  if (stage != 0 && stage != 1)
-    throw common::InputError("updateMaterialStage -material " + std::to_string(tag()),
-                             "PM4Sand stages are 0 (elastic) and 1 (plastic), got stage " + std::to_string(stage));
-  stage_ = stage;
-  return true;
-}
-
-bool PM4Sand::set_parameter(std::string_view name, double value) {
-  const auto fail = [&](const std::string& what) {
-    throw common::InputError("setParameter " + std::string(name) + " (" + where() + ")", what);
-  };
-  if (name == "updateMaterialStage" || name == "materialState") {
-    if (value != std::floor(value)) fail("expected an integer stage (0 or 1), got " + number_text(value));
-    return update_stage(static_cast<int>(value));
-  }
-  if (name == "FirstCall") {  // re-initialise from the committed stress (any value, as OpenSees)
-    initialize(committed_.history.stress);
-    return true;
-  }
-  if (name == "PostShake") {  // post-shaking reconsolidation on (any value, as OpenSees)
-    post_shake_ = true;
-    elastic_moduli(trial_.history.stress, trial_.carried.K, trial_.carried.G);
-    committed_.carried.K = trial_.carried.K;
-    committed_.carried.G = trial_.carried.G;
-    committed_.carried.Mcur = trial_.carried.Mcur;
-    return true;
-  }
-  if (name == "IntegrationScheme") {
-    const int scheme = static_cast<int>(value);
-    if (value != std::floor(value) || scheme < 1 || scheme > 5)
-      fail("IntegrationScheme: expected 1, 2, 3, 4 or 5, got " + number_text(value));
-    params_.scheme = scheme;
-    return true;
-  }
-  if (name == "refShearModulus" || name == "ShearModulus") {
-    if (!(value > 0.0)) fail("G0: expected G0 > 0, got " + number_text(value));
-    params_.G0 = value;
-    return true;
-  }
-  if (name == "poissonRatio") {
-    if (!(value >= 0.0 && value <= 0.5)) fail("nu: expected 0 <= nu <= 0.5, got " + number_text(value));
-    params_.nu = value == 0.5 ? 0.4999 : value;
-    return true;
-  }
-  if (name == "voidRatio") {  // e0 such that the current volumetric strain gives e = value
-    const double strain_v = pm4::trace(trial_.history.strain);
-    e_init_ = (value + strain_v) / (1.0 - strain_v);
-    return true;
-  }
-  return false;
-}
-
-std::optional<std::vector<double>> PM4Sand::response(std::string_view name) const {
-  const auto list = [](const Vector3& v) { return std::vector<double>{v[0], v[1], v[2]}; };
-  const History& t = trial_.history;
-  const History& n = committed_.history;
-  if (name == "stress" || name == "stresses") return list(stress_);
-  if (name == "strain" || name == "strains") return list(strain_);
-  if (name == "alpha" || name == "backstressratio") return list(n.alpha);
-  if (name == "fabric") return list(n.fabric);
-  if (name == "alpha_in" || name == "alphain") return list(n.alpha_in);
-  if (name == "tracker" || name == "trackers") return std::vector<double>(3, 0.0);  // OpenSees never fills it
-  if (name == "state") {  // OpenSees getState (model sign convention: compression positive)
-    std::vector<double> s;
-    s.reserve(16);
-    for (const Vector3* v : {&t.elastic_strain, &n.alpha, &n.fabric, &n.alpha_in}) s.insert(s.end(), v->data(), v->data() + 3);
-    s.push_back(t.void_ratio);
-    s.push_back(committed_.carried.dgamma);
-    s.push_back(trial_.carried.G);
-    s.push_back(trial_.carried.Kp);
-    return s;
-  }
-  return NDMaterial::response(name);
-}
-
-nlohmann::json PM4Sand::to_json() const {
+// PM4Sand's keys besides the shared ones (pm4::Material::to_json): OpenSees' argument names, and e0.
+void PM4Sand::add_json(nlohmann::json& entry) const {
   const PM4SandParameters& p = params_;
-  return nlohmann::json{{"name", std::to_string(tag())},
-                        {"type", "PM4Sand"},
-                        {"Dr", p.Dr},
-                        {"G0", p.G0},
-                        {"hpo", p.hpo},
-                        {"Den", p.density},
-                        {"P_atm", p.P_atm},
-                        {"h0", p.h0},
-                        {"emax", p.emax},
-                        {"emin", p.emin},
-                        {"nb", p.nb},
-                        {"nd", p.nd},
-                        {"Ado", p.Ado},
-                        {"z_max", p.z_max},
-                        {"cz", p.cz},
-                        {"ce", p.ce},
-                        {"phicv", p.phi_cv},
-                        {"nu", p.nu},
-                        {"Cgd", p.Cgd},
-                        {"Cdr", p.Cdr},
-                        {"Ckaf", p.Ckaf},
-                        {"Q", p.Q},
-                        {"R", p.R},
-                        {"m", p.m},
-                        {"Fsed_min", p.Fsed_min},
-                        {"p_sedo", p.p_sedo},
-                        {"IntScheme", p.scheme},
-                        {"TanType", p.tangent_type},
-                        {"TolF", p.tol_f},
-                        {"TolR", p.tol_r},
-                        {"e_init", e_init_},
-                        {"materialStage", stage_}};
+  entry.update({{"Dr", p.Dr},
+                {"G0", p.G0},
+                {"hpo", p.hpo},
+                {"emax", p.emax},
+                {"emin", p.emin},
+                {"nb", p.nb},
+                {"Cdr", p.Cdr},
+                {"Q", p.Q},
+                {"R", p.R},
+                {"m", p.m},
+                {"Fsed_min", p.Fsed_min},
+                {"p_sedo", p.p_sedo},
+                {"e_init", e_init_}});
 }
 
 std::unique_ptr<NDMaterial> parse_pm4sand(common::CommandArgs& args) {
@@ -536,7 +307,7 @@ std::unique_ptr<NDMaterial> parse_pm4sand(common::CommandArgs& args) {
   p.G0 = args.number("G0");
   p.hpo = args.number("hpo");
   p.density = args.number("Den");
-  // The optional arguments in OpenSees' order (OPS_PM4SandMaterial reads them all as doubles).
+  // The optional arguments in OpenSees' order.
   double scheme = -1.0, tangent_type = -1.0;
   const std::array<std::pair<const char*, double*>, 24> optional{{
       {"P_atm", &p.P_atm}, {"h0", &p.h0}, {"emax", &p.emax}, {"emin", &p.emin}, {"nb", &p.nb}, {"nd", &p.nd},
@@ -544,17 +315,9 @@ std::unique_ptr<NDMaterial> parse_pm4sand(common::CommandArgs& args) {
       {"Cgd", &p.Cgd}, {"Cdr", &p.Cdr}, {"Ckaf", &p.Ckaf}, {"Q", &p.Q}, {"R", &p.R}, {"m", &p.m},
       {"Fsed_min", &p.Fsed_min}, {"p_sedo", &p.p_sedo}, {"IntScheme", &scheme}, {"TanType", &tangent_type},
       {"TolF", &p.tol_f}, {"TolR", &p.tol_r}}};
-  for (const auto& [what, target] : optional) {
-    if (args.empty()) break;
-    *target = args.number(what);
-  }
-  args.expect_end();
-  const auto whole = [&](double v, const char* what) {
-    if (v >= 0.0 && v != std::floor(v)) args.fail(std::string("expected an integer ") + what + ", got " + number_text(v));
-    return v < 0.0 ? -1 : static_cast<int>(std::min(v, 1e6));
-  };
-  p.scheme = whole(scheme, "IntScheme");
-  p.tangent_type = whole(tangent_type, "TanType");
+  pm4::read_optional_arguments(args, optional);
+  p.scheme = pm4::whole_argument(args, scheme, "IntScheme");
+  p.tangent_type = pm4::whole_argument(args, tangent_type, "TanType");
   return std::make_unique<PM4Sand>(tag, p);
 }
 

@@ -22,8 +22,7 @@
 #include <string>
 
 #include "common/command_args.hpp"
-#include "fem_tcl/materials/nd_material.hpp"
-#include "fem_tcl/materials/pm4_integration.hpp"
+#include "fem_tcl/materials/pm4_material.hpp"
 
 namespace fem::materials {
 
@@ -50,81 +49,40 @@ struct PM4SandParameters {
 /// table 3.1 and section 4.1); validates the values (common::InputError naming the argument, `where` first).
 PM4SandParameters resolve_parameters(const PM4SandParameters& given, const std::string& where);
 
-class PM4Sand final : public NDMaterial, private pm4::Model {
+/// PM4Sand's physics on the shared PM4 material (pm4_material.hpp: the state protocol, stages, commands, responses).
+class PM4Sand final : public pm4::Material<PM4SandParameters> {
  public:
   /// Resolves and validates the parameters (common::InputError naming the argument) and sets the start state:
   /// zero stress, stage 0, moduli at p = P_atm (OpenSees' constructor and initialize()).
   PM4Sand(int tag, const PM4SandParameters& given);
 
-  std::string type_name() const override { return "PM4Sand"; }
-  /// Plane strain only: PM4Sand is a 2D model and OpenSees gives no plane-stress copy (common::InputError).
-  std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
   std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<PM4Sand>(*this); }
 
-  void set_trial_strain(const Vector3& strain) override;
-  const Vector3& strain() const override { return strain_; }
-  const Vector3& stress() const override { return stress_; }
-  const Matrix3& tangent() const override { return tangent_; }
-  /// OpenSees' getInitialTangent: the current elastic matrix (state dependent in stage 1).
-  Matrix3 initial_tangent() const override { return trial_.carried.ce; }
-  void commit_state() override;
-  void revert_to_last_commit() override;
-  /// OpenSees' revertToStart: the model re-initialised from the current trial stress (stress and strain kept).
-  void revert_to_start() override;
-
-  double density() const override { return params_.density; }
-  /// (sxx, syy, szz, sxy, 0, 0): the model has no out-of-plane stress; szz is reported as its 2D mean stress
-  /// (sxx + syy) / 2, so that the tensor's mean stress is the model's p.
-  Vector6 stress_3d() const override;
-
-  /// FirstCall, PostShake, poissonRatio, refShearModulus / ShearModulus, voidRatio, IntegrationScheme,
-  /// materialState, updateMaterialStage (OpenSees PM4Sand::setParameter); false for any other name.
-  bool set_parameter(std::string_view name, double value) override;
-  /// 0 = elastic, 1 = plastic; any other stage throws common::InputError.
-  bool update_stage(int stage) override;
-  /// OpenSees' PM4Sand responses: stress(es) (3), strain(s) (3), state (16), alpha / backstressratio,
-  /// fabric, alpha_in / alphain, tracker(s) (3 each); and stress3D / fullStress (6).
-  std::optional<std::vector<double>> response(std::string_view name) const override;
-  nlohmann::json to_json() const override;
-
-  /// The parameters in force (defaults resolved; Ado and z_max once initialised).
-  const PM4SandParameters& parameters() const { return params_; }
-  /// M = 2 sin(phi_cv), the critical-state stress ratio q / p with q = 2 sqrt(((sxx - syy)/2)^2 + sxy^2).
-  double critical_stress_ratio() const { return Mc_; }
   /// e0 = emax - (emax - emin) Dr (or as set by `voidRatio`).
   double initial_void_ratio() const { return e_init_; }
-  int stage() const { return stage_; }
 
  private:
   using History = pm4::History;
   using Carried = pm4::Carried;
-  using State = pm4::State;
   using Hardening = pm4::Hardening;
 
   // the model (manual section 2); the pm4::Model hooks of the shared integration (pm4_integration.hpp)
   double state_parameter(double Dr, double p) const;
   void elastic_stage_moduli(const Vector3& committed_stress, double& K, double& G) override;
   void elastic_moduli(const Vector3& stress, double& K, double& G) override;
-  void elastic_moduli_plain(const Vector3& stress, double& K, double& G) const;
   Hardening state_dependent(const Vector3& stress, const Vector3& alpha, const Vector3& fabric, double G,
                             double void_ratio) override;
-  double void_ratio_at(const Vector3& strain) const { return pm4::void_ratio_at(e_init_, strain); }
   double relative_density_at(double void_ratio) const { return (params_.emax - void_ratio) / (params_.emax - params_.emin); }
-  /// The constants of one trial of the shared integration.
-  pm4::Settings settings() const;
 
-  void initialize(const Vector3& stress);
-  void publish();
-  std::string where() const { return "nDMaterial PM4Sand " + std::to_string(tag()); }
+  // the pm4::Material hooks
+  void initialize(const Vector3& stress) override;
+  std::unique_ptr<Material> fresh_copy() const override;
+  double void_ratio_at_zero_strain() const override { return e_init_; }
+  void set_void_ratio_at_zero_strain(double e0) override { e_init_ = e0; }
+  void add_json(nlohmann::json& entry) const override;
 
-  PM4SandParameters params_;
-  double Mc_ = 0, e_init_ = 0;
-  double p_min_ = 0, p_min2_ = 0;  ///< the smallest p the model uses, and the p of its dilatancy cut-off
-  int stage_ = 0;
-  bool post_shake_ = false;
-  State committed_, trial_;
-  Vector3 stress_ = Vector3::Zero(), strain_ = Vector3::Zero();  ///< tension positive, as reported
-  Matrix3 tangent_ = Matrix3::Zero();
+  double e_init_ = 0;
+  double p_min2_ = 0;  ///< the p of the dilatancy cut-off
 };
 
 /// `nDMaterial PM4Sand tag Dr G0 hpo Den <P_atm h0 emax emin nb nd Ado z_max cz ce phicv nu Cgd Cdr Ckaf Q R m

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <sstream>
 
 #include "common/input_error.hpp"
+#include "common/number_text.hpp"
 
 // Reimplemented from OpenSees' PM4Silt.cpp (commit 2890cb36). The model's equations are cited by section of
 // Boulanger & Ziotopoulou (2018), Report UCD/CGM-18/01 ("the manual"), section 2 (model formulation) and
@@ -63,17 +63,12 @@ using pm4::macaulay;
 using pm4::mean_stress;
 using pm4::norm;
 
-constexpr double kPi = 3.14159265359;  // the value OpenSees' PM4Silt uses for phi_cv -> Mc and phi_max
+using pm4::kPi;  // the value OpenSees' PM4Silt uses for phi_cv -> Mc and phi_max
 constexpr double kOneThird = 1.0 / 3.0;
 constexpr double kTwoThirds = 2.0 / 3.0;
 constexpr double kMdMax = 1.4142136;  // OpenSees' cap of Md (sqrt(2) to 8 digits)
 
-std::string number_text(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
+std::string number_text(double v) { return common::number_text(v, 10); }
 
 }  // namespace
 
@@ -117,18 +112,7 @@ PM4SiltParameters resolve_parameters(const PM4SiltParameters& given, const std::
   p.Ckaf = or_default(given.Ckaf, 4.0);
   p.m = or_default(given.m, 0.01);
   p.CG_consol = or_default(given.CG_consol, 2.0);
-  p.scheme = given.scheme < 0 ? 5 : given.scheme;
-  check(p.scheme >= 1 && p.scheme <= 5,
-        "IntScheme: expected 1 (modified Euler), 2 (forward Euler), 3 (Runge-Kutta 4), 4 or 5 (forward / modified "
-        "Euler with at most 1e-5 strain per sub-step), got " + std::to_string(given.scheme));
-  p.tangent_type = given.tangent_type < 0 ? 0 : given.tangent_type;
-  check(p.tangent_type >= 0 && p.tangent_type <= 2,
-        "TanType: expected 0 (elastic), 1 or 2 (elastic matrix of the last commit), got " +
-            std::to_string(given.tangent_type));
-  p.tol_f = or_default(given.tol_f, 1e-7);
-  p.tol_r = or_default(given.tol_r, 1e-10);
-  check(p.tol_f > 0.0, "TolF: expected TolF > 0, got " + number_text(given.tol_f));
-  check(p.tol_r > 0.0, "TolR: expected TolR > 0, got " + number_text(given.tol_r));
+  pm4::resolve_integration_options(p.scheme, p.tangent_type, p.tol_f, p.tol_r, 1e-7, 1e-10, where);
   return p;
 }
 
@@ -137,46 +121,19 @@ PM4SiltParameters resolve_parameters(const PM4SiltParameters& given, const std::
 // OpenSees' constructor and initialize(): zero stress, the moduli at p = P_atm, p_min = P_atm / 200. The bounding
 // surface's cap (manual section 2, bounding surface dense of critical): Mb,max = 2 sin(60 deg) and
 // C_Mb = 1 / ((Mb,max / M)^(1 / nb_dry) - 1).
-PM4Silt::PM4Silt(int tag, const PM4SiltParameters& given) : NDMaterial(tag) {
-  params_ = resolve_parameters(given, where());
-  Mc_ = 2.0 * std::sin(params_.phi_cv / 180.0 * kPi);
+PM4Silt::PM4Silt(int tag, const PM4SiltParameters& given)
+    : Material(tag, "PM4Silt", "G_o", resolve_parameters(given, "nDMaterial PM4Silt " + std::to_string(tag)),
+               pm4::Variant{.void_ratio_before_elastic_check = false, .rk4_floors_negative_denominator = true}) {
   Mb_max_ = 2.0 * std::sin(60.0 / 180.0 * kPi);
   C_Mb_ = 1.0 / (std::pow(Mb_max_ / Mc_, 1.0 / params_.nb_dry) - 1.0);
-  p_min_ = params_.P_atm / 200.0;
-  History& h = committed_.history;
-  Carried& c = committed_.carried;
-  h.void_ratio = params_.e_init;
-  h.z_peak = params_.z_max / 100000.0;
-  c.Mb = c.Md = Mc_;  // OpenSees leaves them unset until the first initialisation
-  elastic_moduli_plain(Vector3(params_.P_atm, params_.P_atm, 0.0), c.K, c.G);
-  c.ce = c.cep = pm4::elastic_stiffness(c.K, c.G);
-  trial_ = committed_;
-  publish();
+  start(params_.e_init);
 }
 
-std::unique_ptr<NDMaterial> PM4Silt::copy_for(PlaneType plane) const {
-  if (plane != PlaneType::PlaneStrain)
-    throw common::InputError(where(), "PM4Silt is a plane-strain (2D) model: it has no plane-stress form");
-  // OpenSees getCopy: a new material from the current parameters (phi_cv recovered from M, quirk 9), fresh state;
-  // the stage is the parent's (OpenSees' stage flag is shared by all PM4Silt materials).
+// OpenSees getCopy: a new material from the current parameters, phi_cv recovered from M (quirk 9), fresh state.
+std::unique_ptr<PM4Silt::Material> PM4Silt::fresh_copy() const {
   PM4SiltParameters p = params_;
   p.phi_cv = std::asin(Mc_ / 2.0) * 180.0 / kPi;
-  auto copy = std::make_unique<PM4Silt>(tag(), p);
-  copy->stage_ = stage_;
-  return copy;
-}
-
-void PM4Silt::publish() {
-  const History& t = trial_.history;
-  stress_ = -(t.stress + t.stress_offset);
-  strain_ = -t.strain;
-  tangent_ = params_.tangent_type == 0 ? trial_.carried.ce : trial_.carried.cep;
-}
-
-Vector6 PM4Silt::stress_3d() const {
-  Vector6 s = Vector6::Zero();
-  s << stress_[0], stress_[1], 0.5 * (stress_[0] + stress_[1]), stress_[2], 0.0, 0.0;
-  return s;
+  return std::make_unique<PM4Silt>(tag(), p);
 }
 
 // --- the model ----------------------------------------------------------------------------------------------
@@ -194,15 +151,6 @@ void PM4Silt::surfaces(double xi, double p, double& Mb, double& Md) const {
   Md = std::min(kMdMax, Mc_ * std::exp(params_.nd * xi / params_.lambda));
   if (xi < 0.0) Mb = Mc_ * std::pow((1.0 + C_Mb_) / (p / p_cs_ + C_Mb_), params_.nb_dry);
   else Mb = Mc_ * std::exp(-params_.nb_wet * xi / params_.lambda);
-}
-
-// G = G_o P_atm (stage 0) or G_o P_atm sqrt(p / P_atm) (OpenSees' 3-argument GetElasticModuli, used by the
-// constructor); K = 2 (1 + nu) / (3 (1 - 2 nu)) G.
-void PM4Silt::elastic_moduli_plain(const Vector3& stress, double& K, double& G) const {
-  double pn = mean_stress(stress);
-  if (pn <= p_min_) pn = p_min_;
-  G = stage_ == 0 ? params_.G0 * params_.P_atm : params_.G0 * params_.P_atm * std::sqrt(pn / params_.P_atm);
-  K = pm4::bulk_modulus(G, params_.nu);
 }
 
 // Quirk 4: the elastic stage keeps the carried moduli (those of the last commit or initialisation).
@@ -335,21 +283,9 @@ PM4Silt::Hardening PM4Silt::state_dependent(const Vector3& stress, const Vector3
 // difference kept as offset); the fabric and the reversal memory are cleared, alpha_in set to alpha.
 void PM4Silt::initialize(const Vector3& stress) {
   const Vector3 initial = stress;
-  trial_.history = committed_.history;  // an uncommitted trial is dropped
-  History& t = trial_.history;
-  Carried& c = trial_.carried;
   PM4SiltParameters& P = params_;
-  double p0 = mean_stress(initial);
-  if (p0 < P.P_atm / 200.0) {
-    p0 = P.P_atm / 200.0;
-    t.stress = p0 * identity();
-    t.stress_offset = initial - t.stress;
-    t.alpha.setZero();
-  } else {
-    t.stress = initial;
-    t.stress_offset.setZero();
-    t.alpha = deviator(initial) / p0;
-  }
+  const double p0 = begin_initialization(initial, P.P_atm / 200.0);
+  Carried& c = trial_.carried;
   if (P.Su <= 0.0) P.Su = P.Su_Rat * initial[1];
   else P.Su_Rat = P.Su / initial[1];
   p_cs_ = 2.0 * P.Su / Mc_;
@@ -364,203 +300,43 @@ void PM4Silt::initialize(const Vector3& stress) {
   if (P.ce < 0.0) P.ce = std::min(1.3, 0.5 + 1.2 * macaulay(P.Su_Rat - 0.25));
   Gamma_ = P.e_init + P.lambda * std::log(101.3 * 2.0 * P.Su / Mc_ / P.P_atm);
   surfaces(state_parameter(P.e_init, p0), p0, c.Mb, c.Md);
-  const double M_cut = std::max(c.Mb, c.Md);
-  const double M_in = std::sqrt(2.0) * norm(deviator(t.stress)) / p0;
-  if (M_in > M_cut) {
-    const Vector3 r = (t.stress - p0 * identity()) / p0 * M_cut / M_in;
-    t.stress = p0 * identity() + r * p0;
-    t.stress_offset = initial - t.stress;
-    t.alpha = r * (M_cut - P.m) / M_cut;
-  }
-  t.z_cum = 0.0;
-  elastic_moduli(t.stress, c.K, c.G);
-  c.ce = c.cep = pm4::elastic_stiffness(c.K, c.G);
-  c.Kp = 100.0 * c.G;
-  t.alpha_in = t.alpha;
-  t.alpha_in_p.setZero();
-  t.alpha_in_true = t.alpha_in_max = t.alpha_in_min = t.alpha;
-  t.fabric.setZero();
-  t.fabric_in.setZero();
-  t.z_peak = P.z_max / 100000.0;
-  c.p_zp = std::max(p0, p_min_) / 100.0;
-  c.z_xp = 0.0;
-  c.p_zp_unset = true;
+  cap_initial_stress_ratio(initial, p0);
   tracker_.setZero();
-  committed_ = trial_;
-  publish();
+  finish_initialization(p0, trial_.history.alpha);  // alpha_in = alpha
 }
 
-// --- the stress update ----------------------------------------------------------------------------------------
+// --- the commit, commands, JSON, the command -------------------------------------------------------------------
 
-// The shared explicit integration (pm4_integration.hpp) with PM4Silt's moduli and surfaces and PM4Silt.cpp's
-// variant of the driver (quirks 4, 6, 7).
-pm4::Settings PM4Silt::settings() const {
-  pm4::Settings s;
-  s.scheme = static_cast<pm4::Scheme>(params_.scheme);
-  s.m = params_.m;
-  s.tol_f = params_.tol_f;
-  s.cz = params_.cz;
-  s.z_max = params_.z_max;
-  s.Mc = Mc_;
-  s.p_min = p_min_;
-  s.e_init = params_.e_init;
-  s.variant.void_ratio_before_elastic_check = false;
-  s.variant.rk4_floors_negative_denominator = true;
-  return s;
-}
+// Quirk 5: the stress ratio is scaled back onto the bounding surface at commit only where |syy - sxx| < 1e-5.
+bool PM4Silt::corrects_at_commit(const Vector3& stress) const { return std::abs(stress[1] - stress[0]) < 1e-5; }
 
-void PM4Silt::set_trial_strain(const Vector3& strain) {
-  trial_.history = committed_.history;  // the carried members stay as the last trial left them
-  trial_.history.strain = -strain;
-  pm4::integrate(*this, settings(), stage_, trial_, committed_.history);
-  publish();
-}
-
-// --- commit / revert ------------------------------------------------------------------------------------------
-
-// OpenSees commitState: the moduli at the new stress; in stage 1 a stress ratio beyond Mb is scaled back onto the
-// bounding surface (alpha onto its image) where syy and sxx are within 1e-5 (quirk 5); then the shared part
-// (z_cum, z_peak, the void ratio, the elastic matrix).
-void PM4Silt::commit_state() {
-  History& t = trial_.history;
-  Carried& c = trial_.carried;
-  elastic_moduli(t.stress, c.K, c.G);
-  if (c.Mcur > c.Mb && stage_ != 0 && std::abs(t.stress[1] - t.stress[0]) < 1e-5) {
-    const double p = mean_stress(t.stress);
-    const Vector3 r = deviator(t.stress) * (c.Mb / c.Mcur / p);
-    t.stress = p * identity() + r * p;
-    t.alpha = r * (c.Mb - params_.m) / c.Mb;
-  }
-  pm4::commit_history(settings(), trial_, committed_.history);
-  committed_ = trial_;
-  publish();
-}
-
-void PM4Silt::revert_to_last_commit() {
-  trial_ = committed_;
-  publish();
-}
-
-void PM4Silt::revert_to_start() { initialize(trial_.history.stress); }
-
-// --- commands -------------------------------------------------------------------------------------------------
-
-bool PM4Silt::update_stage(int stage) {
-  if (stage != 0 && stage != 1)
-    throw common::InputError("updateMaterialStage -material " + std::to_string(tag()),
-                             "PM4Silt stages are 0 (elastic) and 1 (plastic), got stage " + std::to_string(stage));
-  stage_ = stage;
-  return true;
-}
-
-bool PM4Silt::set_parameter(std::string_view name, double value) {
-  const auto fail = [&](const std::string& what) {
-    throw common::InputError("setParameter " + std::string(name) + " (" + where() + ")", what);
-  };
-  if (name == "updateMaterialStage" || name == "materialState") {
-    if (value != std::floor(value)) fail("expected an integer stage (0 or 1), got " + number_text(value));
-    return update_stage(static_cast<int>(value));
-  }
-  if (name == "FirstCall") {  // re-initialise from the committed stress (any value, as OpenSees)
-    initialize(committed_.history.stress);
-    return true;
-  }
-  if (name == "PostShake") {  // post-shaking reconsolidation on (any value, as OpenSees)
-    post_shake_ = true;
-    elastic_moduli(trial_.history.stress, trial_.carried.K, trial_.carried.G);
-    committed_.carried.K = trial_.carried.K;
-    committed_.carried.G = trial_.carried.G;
-    committed_.carried.Mcur = trial_.carried.Mcur;
-    return true;
-  }
+// PM4Silt's own setParameter name (OpenSees PM4Silt::setParameter / updateParameter).
+bool PM4Silt::set_model_parameter(std::string_view name, double value) {
   if (name == "Su_factor") {
-    if (!(value > 0.0)) fail("Su_factor: expected Su_factor > 0, got " + number_text(value));
+    if (!(value > 0.0)) parameter_error(name, "Su_factor: expected Su_factor > 0, got " + number_text(value));
     params_.Su_factor = value;
-    return true;
-  }
-  if (name == "IntegrationScheme") {
-    const int scheme = static_cast<int>(value);
-    if (value != std::floor(value) || scheme < 1 || scheme > 5)
-      fail("IntegrationScheme: expected 1, 2, 3, 4 or 5, got " + number_text(value));
-    params_.scheme = scheme;
-    return true;
-  }
-  if (name == "refShearModulus" || name == "ShearModulus") {
-    if (!(value > 0.0)) fail("G_o: expected G_o > 0, got " + number_text(value));
-    params_.G0 = value;
-    return true;
-  }
-  if (name == "poissonRatio") {  // OpenSees' GetElasticModuli takes nu >= 0.5 as 0.4999
-    if (!(value >= 0.0 && value <= 0.5)) fail("nu: expected 0 <= nu <= 0.5, got " + number_text(value));
-    params_.nu = value == 0.5 ? 0.4999 : value;
-    return true;
-  }
-  if (name == "voidRatio") {  // eInit such that the current volumetric strain gives e = value
-    const double strain_v = pm4::trace(trial_.history.strain);
-    params_.e_init = (value + strain_v) / (1.0 - strain_v);
     return true;
   }
   return false;
 }
 
-std::optional<std::vector<double>> PM4Silt::response(std::string_view name) const {
-  const auto list = [](const Vector3& v) { return std::vector<double>{v[0], v[1], v[2]}; };
-  const History& t = trial_.history;
-  const History& n = committed_.history;
-  if (name == "stress" || name == "stresses") return list(stress_);
-  if (name == "strain" || name == "strains") return list(strain_);
-  if (name == "alpha" || name == "backstressratio") return list(n.alpha);
-  if (name == "fabric") return list(n.fabric);
-  if (name == "alpha_in" || name == "alphain") return list(n.alpha_in);
-  if (name == "tracker" || name == "trackers") return list(tracker_);
-  if (name == "state") {  // OpenSees getState (model sign convention: compression positive; trial values, quirk 6)
-    std::vector<double> s;
-    s.reserve(16);
-    for (const Vector3* v : {&t.elastic_strain, &t.alpha, &t.fabric, &t.alpha_in}) s.insert(s.end(), v->data(), v->data() + 3);
-    s.push_back(t.void_ratio);
-    s.push_back(trial_.carried.dgamma);
-    s.push_back(trial_.carried.G);
-    s.push_back(trial_.carried.Kp);
-    return s;
-  }
-  return NDMaterial::response(name);
-}
-
-nlohmann::json PM4Silt::to_json() const {
+// PM4Silt's keys besides the shared ones (pm4::Material::to_json): OpenSees' argument names, and p_cs.
+void PM4Silt::add_json(nlohmann::json& entry) const {
   const PM4SiltParameters& p = params_;
-  return nlohmann::json{{"name", std::to_string(tag())},
-                        {"type", "PM4Silt"},
-                        {"S_u", p.Su},
-                        {"Su_Rat", p.Su_Rat},
-                        {"G_o", p.G0},
-                        {"h_po", p.hpo},
-                        {"Den", p.density},
-                        {"Su_factor", p.Su_factor},
-                        {"P_atm", p.P_atm},
-                        {"nu", p.nu},
-                        {"nG", p.nG},
-                        {"h0", p.h0},
-                        {"eInit", p.e_init},
-                        {"lambda", p.lambda},
-                        {"phicv", p.phi_cv},
-                        {"nb_wet", p.nb_wet},
-                        {"nb_dry", p.nb_dry},
-                        {"nd", p.nd},
-                        {"Ado", p.Ado},
-                        {"ru_max", p.ru_max},
-                        {"z_max", p.z_max},
-                        {"cz", p.cz},
-                        {"ce", p.ce},
-                        {"Cgd", p.Cgd},
-                        {"Ckaf", p.Ckaf},
-                        {"m_m", p.m},
-                        {"CG_consol", p.CG_consol},
-                        {"IntScheme", p.scheme},
-                        {"TanType", p.tangent_type},
-                        {"TolF", p.tol_f},
-                        {"TolR", p.tol_r},
-                        {"p_cs", p_cs_},
-                        {"materialStage", stage_}};
+  entry.update({{"S_u", p.Su},
+                {"Su_Rat", p.Su_Rat},
+                {"G_o", p.G0},
+                {"h_po", p.hpo},
+                {"Su_factor", p.Su_factor},
+                {"nG", p.nG},
+                {"eInit", p.e_init},
+                {"lambda", p.lambda},
+                {"nb_wet", p.nb_wet},
+                {"nb_dry", p.nb_dry},
+                {"ru_max", p.ru_max},
+                {"m_m", p.m},
+                {"CG_consol", p.CG_consol},
+                {"p_cs", p_cs_}});
 }
 
 std::unique_ptr<NDMaterial> parse_pm4silt(common::CommandArgs& args) {
@@ -571,7 +347,7 @@ std::unique_ptr<NDMaterial> parse_pm4silt(common::CommandArgs& args) {
   p.G0 = args.number("G_o");
   p.hpo = args.number("h_po");
   p.density = args.number("Den");
-  // The optional arguments in OpenSees' order (OPS_PM4SiltMaterial reads them all as doubles).
+  // The optional arguments in OpenSees' order.
   double scheme = -1.0, tangent_type = -1.0;
   const std::array<std::pair<const char*, double*>, 24> optional{{
       {"Su_factor", &p.Su_factor}, {"P_atm", &p.P_atm}, {"nu", &p.nu}, {"nG", &p.nG}, {"h0", &p.h0},
@@ -579,17 +355,9 @@ std::unique_ptr<NDMaterial> parse_pm4silt(common::CommandArgs& args) {
       {"nb_dry", &p.nb_dry}, {"nd", &p.nd}, {"Ado", &p.Ado}, {"ru_max", &p.ru_max}, {"z_max", &p.z_max},
       {"cz", &p.cz}, {"ce", &p.ce}, {"Cgd", &p.Cgd}, {"Ckaf", &p.Ckaf}, {"m_m", &p.m}, {"CG_consol", &p.CG_consol},
       {"IntScheme", &scheme}, {"TanType", &tangent_type}, {"TolF", &p.tol_f}, {"TolR", &p.tol_r}}};
-  for (const auto& [what, target] : optional) {
-    if (args.empty()) break;
-    *target = args.number(what);
-  }
-  args.expect_end();
-  const auto whole = [&](double v, const char* what) {
-    if (v >= 0.0 && v != std::floor(v)) args.fail(std::string("expected an integer ") + what + ", got " + number_text(v));
-    return v < 0.0 ? -1 : static_cast<int>(std::min(v, 1e6));
-  };
-  p.scheme = whole(scheme, "IntScheme");
-  p.tangent_type = whole(tangent_type, "TanType");
+  pm4::read_optional_arguments(args, optional);
+  p.scheme = pm4::whole_argument(args, scheme, "IntScheme");
+  p.tangent_type = pm4::whole_argument(args, tangent_type, "TanType");
   return std::make_unique<PM4Silt>(tag, p);
 }
 

@@ -22,8 +22,7 @@
 #include <string>
 
 #include "common/command_args.hpp"
-#include "fem_tcl/materials/nd_material.hpp"
-#include "fem_tcl/materials/pm4_integration.hpp"
+#include "fem_tcl/materials/pm4_material.hpp"
 
 namespace fem::materials {
 
@@ -49,47 +48,15 @@ struct PM4SiltParameters {
 /// the top of initialize(stress)); validates the values (common::InputError naming the argument, `where` first).
 PM4SiltParameters resolve_parameters(const PM4SiltParameters& given, const std::string& where);
 
-class PM4Silt final : public NDMaterial, private pm4::Model {
+/// PM4Silt's physics on the shared PM4 material (pm4_material.hpp: the state protocol, stages, commands, responses).
+class PM4Silt final : public pm4::Material<PM4SiltParameters> {
  public:
   /// Resolves and validates the parameters (common::InputError naming the argument) and sets the start state:
   /// zero stress, stage 0, moduli at p = P_atm (OpenSees' constructor and initialize()).
   PM4Silt(int tag, const PM4SiltParameters& given);
 
-  std::string type_name() const override { return "PM4Silt"; }
-  /// Plane strain only: PM4Silt is a 2D model and OpenSees gives no plane-stress copy (common::InputError).
-  std::unique_ptr<NDMaterial> copy_for(PlaneType plane) const override;
   std::unique_ptr<NDMaterial> clone() const override { return std::make_unique<PM4Silt>(*this); }
 
-  void set_trial_strain(const Vector3& strain) override;
-  const Vector3& strain() const override { return strain_; }
-  const Vector3& stress() const override { return stress_; }
-  const Matrix3& tangent() const override { return tangent_; }
-  /// OpenSees' getInitialTangent: the current elastic matrix (state dependent in stage 1).
-  Matrix3 initial_tangent() const override { return trial_.carried.ce; }
-  void commit_state() override;
-  void revert_to_last_commit() override;
-  /// OpenSees' revertToStart: the model re-initialised from the current trial stress (stress and strain kept).
-  void revert_to_start() override;
-
-  double density() const override { return params_.density; }
-  /// (sxx, syy, szz, sxy, 0, 0): the model has no out-of-plane stress; szz is reported as its 2D mean stress
-  /// (sxx + syy) / 2, so that the tensor's mean stress is the model's p.
-  Vector6 stress_3d() const override;
-
-  /// FirstCall, PostShake, Su_factor, poissonRatio, refShearModulus / ShearModulus, voidRatio, IntegrationScheme,
-  /// materialState, updateMaterialStage (OpenSees PM4Silt::setParameter); false for any other name.
-  bool set_parameter(std::string_view name, double value) override;
-  /// 0 = elastic, 1 = plastic; any other stage throws common::InputError.
-  bool update_stage(int stage) override;
-  /// OpenSees' PM4Silt responses: stress(es) (3), strain(s) (3), state (16), alpha / backstressratio, fabric,
-  /// alpha_in / alphain, tracker(s) (3 each); and stress3D / fullStress (6).
-  std::optional<std::vector<double>> response(std::string_view name) const override;
-  nlohmann::json to_json() const override;
-
-  /// The parameters in force (defaults resolved; S_u, Su_Rat, ru_max, z_max and ce once initialised).
-  const PM4SiltParameters& parameters() const { return params_; }
-  /// M = 2 sin(phi_cv), the critical-state stress ratio q / p with q = 2 sqrt(((sxx - syy)/2)^2 + sxy^2).
-  double critical_stress_ratio() const { return Mc_; }
   /// p_cs = 2 S_u / M: the mean effective stress at critical state at e = eInit (0 until initialised).
   double critical_mean_stress() const { return p_cs_; }
   /// Gamma (OpenSees me0): the critical-state line e_cs = Gamma - lambda ln(101.3 p / (P_atm Su_factor)).
@@ -98,7 +65,6 @@ class PM4Silt final : public NDMaterial, private pm4::Model {
   double minimum_mean_stress() const { return p_min_; }
   /// The state parameter xi = e - e_cs at void ratio e and mean stress p (p not below the minimum).
   double state_parameter(double void_ratio, double p) const;
-  int stage() const { return stage_; }
 
  private:
   using History = pm4::History;
@@ -109,30 +75,26 @@ class PM4Silt final : public NDMaterial, private pm4::Model {
   // the model (manual section 2); the pm4::Model hooks of the shared integration (pm4_integration.hpp)
   void elastic_stage_moduli(const Vector3& committed_stress, double& K, double& G) override;
   void elastic_moduli(const Vector3& stress, double& K, double& G) override;
-  void elastic_moduli_plain(const Vector3& stress, double& K, double& G) const;
   Hardening state_dependent(const Vector3& stress, const Vector3& alpha, const Vector3& fabric, double G,
                             double void_ratio) override;
   /// Mb (dense of critical: the power law in p / p_cs capped by phi_max = 60 degrees; loose: exp(-nb_wet xi /
   /// lambda)) and Md = min(sqrt(2), M exp(nd xi / lambda)) at state parameter xi and mean stress p.
   void surfaces(double xi, double p, double& Mb, double& Md) const;
-  /// The constants of one trial of the shared integration.
-  pm4::Settings settings() const;
 
-  void initialize(const Vector3& stress);
-  void publish();
-  std::string where() const { return "nDMaterial PM4Silt " + std::to_string(tag()); }
+  // the pm4::Material hooks: PM4Silt.cpp's departures from PM4Sand.cpp are quirks 5, 6, 9 and 10 (pm4silt.cpp)
+  void initialize(const Vector3& stress) override;
+  std::unique_ptr<Material> fresh_copy() const override;
+  double void_ratio_at_zero_strain() const override { return params_.e_init; }
+  void set_void_ratio_at_zero_strain(double e0) override { params_.e_init = e0; }
+  bool corrects_at_commit(const Vector3& stress) const override;
+  bool set_model_parameter(std::string_view name, double value) override;
+  Vector3 tracker() const override { return tracker_; }
+  const State& state_reported() const override { return trial_; }
+  void add_json(nlohmann::json& entry) const override;
 
-  PM4SiltParameters params_;
-  double Mc_ = 0;
   double Mb_max_ = 0, C_Mb_ = 0;  ///< the bounding ratio at p = 0 (phi_max = 60 degrees) and its constant
   double p_cs_ = 0, Gamma_ = 0;   ///< the critical-state mean stress at eInit and the line's intercept
-  double p_min_ = 0;              ///< the smallest p the model uses
-  int stage_ = 0;
-  bool post_shake_ = false;
-  State committed_, trial_;
   Vector3 tracker_ = Vector3::Zero();  ///< OpenSees' mTracker: (0, D of the last GetStateDependent, 0)
-  Vector3 stress_ = Vector3::Zero(), strain_ = Vector3::Zero();  ///< tension positive, as reported
-  Matrix3 tangent_ = Matrix3::Zero();
 };
 
 /// `nDMaterial PM4Silt tag S_u Su_Rat G_o h_po Den <Su_factor P_atm nu nG h0 eInit lambda phicv nb_wet nb_dry nd

@@ -21,13 +21,15 @@
 #     horizontally to the base). -motion-dt is the records' time step (scripts/motion_suite.py passes its own).
 # The recorders of scripts/hybrid_run.py's contract (with pp.out: the pore pressures) every -record s from the
 # start of the shaking, so that the chain carries the liquefied dam into MPM with a residual strength
-# (fem2mpm --liquefied; bridge/README.md).
+# (fem2mpm --residual-ratio: Sr = 0.06 sigma'v0, the lower part of Olson & Stark's range) and the rest with its
+# friction on the effective stress of the transfer (--effective-friction; without it the dam body holds the
+# liquefied pond: bridge/README.md).
 #
 # Sample run (the transfer window: one FEM run, transfers at 4, 8 and 12 s, each run 10 s in MPM; minutes):
-#   scripts/hybrid_run.py scripts/examples/tailings_dam.tcl --transfer 4,8,12 --duration 10 --jobs 2 --out results/tailings_dam --units kN --ppd 1 --cfl 0.4 --base-friction 0.6 --residual-ratio 0.1
+#   scripts/hybrid_run.py scripts/examples/tailings_dam.tcl --transfer 4,8,12 --duration 10 --jobs 2 --out results/tailings_dam --units kN --ppd 4 --cell-size 2 --cfl 0.4 --base-friction 0.6 --residual-ratio 0.06 --effective-friction
 #
 # Test run (tests/regression/study/examples_sample_runs_test.py: these values replace the sample run's):
-#   --transfer 2 --duration 1.5 --jobs 1 -- -tend 2
+#   --transfer 2 --duration 1.5 --jobs 1 --ppd 2 --cell-size 4 -- -tend 2
 #
 # Factor of safety: none (PM4Sand has no strength for strengthReduction to reduce; the dam is built to liquefy)
 #
@@ -147,6 +149,7 @@ if {[analyze 10 1000.0] != 0} { error "tailings_dam.tcl: the gravity stage did n
 foreach m {2 3} { updateMaterialStage -material $m -stage 1 }
 setParameter -val 0 FirstCall 2
 setParameter -val 0 FirstCall 3
+advance_to [expr {[getTime] + 100.0}] 10.0 "the plastic stage's consolidation"
 advance_to [expr {[getTime] + 1.0e4}] 1000.0 "the plastic stage's consolidation"
 foreach m {1 2 3} {
     setParameter -val [expr {$kh($m) / $g}] hPerm $m

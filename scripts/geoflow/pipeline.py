@@ -109,7 +109,7 @@ def fem2mpm_command(bins, fem_dir, out, t_transfer, options=()):
 # file the FEM run will write is part of the check
 UP_OPTIONS = ("--liquefied", "--liquefied-table", "--residual-ratio", "--residual-n160cs", "--void-redistribution",
               "--liquefied-softening", "--reference-time", "--strain", "--pp-nodes", "--strength-step",
-              "--max-liquefied-materials")
+              "--max-liquefied-materials", "--effective-friction")
 
 
 def check_fem2mpm_options(bins, fem_dir, out, t_transfer, options=()):

@@ -9,9 +9,6 @@
 // SSPquadUP forwards to the material): every column within 1 % of its peak |value| over the record.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
-#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -22,6 +19,7 @@
 #include "common/command_args.hpp"
 #include "fem_tcl/materials/material_registry.hpp"
 #include "support/recorder_compare.hpp"
+#include "support/strain_path_replay.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -53,7 +51,7 @@ TEST(PressureDependMultiYield02Golden, UndrainedCyclicSimpleShearMatchesOpenSees
   const auto strain = test_support::read_numeric_table(kCase + "/ref/strain.out");
   const auto stress = test_support::read_numeric_table(kCase + "/ref/stress.out");
   ASSERT_EQ(strain.size(), 22940u);
-  ASSERT_EQ(stress.size(), strain.size());
+  ASSERT_NO_FATAL_FAILURE(test_support::check_golden_rows(strain, stress, 5));
   constexpr std::size_t kElasticRows = 125;  // analyze 100 (consolidation) + analyze 25 (undrained), stage 0
   ASSERT_EQ(stress[kElasticRows - 1][5], 0.0);
   ASSERT_NE(stress[kElasticRows][5], 0.0);
@@ -62,34 +60,19 @@ TEST(PressureDependMultiYield02Golden, UndrainedCyclicSimpleShearMatchesOpenSees
   auto material = fem::materials::find_nd_material_parser("PressureDependMultiYield02")(args)
                       ->copy_for(fem::materials::PlaneType::PlaneStrain);
   material->update_stage(0);  // updateMaterialStage -material 1 -stage 0
-
-  std::array<double, 5> peak{}, largest{};
-  std::array<std::size_t, 5> row_of{};
-  for (const auto& r : stress) {
-    for (std::size_t j = 0; j < 5; ++j) peak[j] = std::max(peak[j], std::abs(r[j + 1]));
-  }
-  for (std::size_t i = 0; i < strain.size(); ++i) {
-    ASSERT_EQ(strain[i].size(), 4u);
-    ASSERT_EQ(stress[i].size(), 6u);
-    ASSERT_EQ(strain[i][0], stress[i][0]);
-    if (i == kElasticRows) material->update_stage(1);
-    material->set_trial_strain(fem::materials::Vector3(strain[i][1], strain[i][2], strain[i][3]));
-    material->commit_state();
-    const auto s = *material->response("stress");
-    ASSERT_EQ(s.size(), 5u);
-    for (std::size_t j = 0; j < 5; ++j) {
-      const double error = std::abs(s[j] - stress[i][j + 1]);
-      if (error > largest[j]) {
-        largest[j] = error;
-        row_of[j] = i + 1;
-      }
-    }
-  }
+  const auto computed = test_support::replay_strain_path(
+      *material, strain, [&](std::size_t row) {
+        if (row == kElasticRows + 1) material->update_stage(1);
+      },
+      [](const fem::materials::NDMaterial& m) { return *m.response("stress"); });  // sxx syy szz sxy ratio
+  ASSERT_EQ(computed.front().size(), 5u);
+  const auto errors = test_support::column_errors(stress, computed);
   const char* names[] = {"sxx", "syy", "szz", "sxy", "ratio"};
   for (std::size_t j = 0; j < 5; ++j) {
-    std::cout << "up_dss_pdmy02 " << names[j] << ": peak |value| " << peak[j] << ", largest error " << largest[j]
-              << " (" << 100.0 * largest[j] / peak[j] << " % of the peak) at row " << row_of[j] << "\n";
-    EXPECT_LE(largest[j], 0.01 * peak[j]) << names[j] << " at row " << row_of[j];
+    const auto& e = errors[j];
+    std::cout << "up_dss_pdmy02 " << names[j] << ": peak |value| " << e.peak << ", largest error " << e.worst
+              << " (" << 100.0 * e.worst / e.peak << " % of the peak) at row " << e.row << "\n";
+    EXPECT_LE(e.worst, 0.01 * e.peak) << names[j] << " at row " << e.row;
   }
   // The record ends at 3 % shear strain with the stress ratio at the failure surface (summary.txt).
   EXPECT_CLOSE(stress.back()[5], 1.0, 1e-3, 0.0);

@@ -17,14 +17,13 @@
 // column: |fem - ref| <= 1 % of that column's largest |value| over the whole record.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "fem_tcl/materials/pm4sand.hpp"
 #include "support/recorder_compare.hpp"
+#include "support/strain_path_replay.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -32,7 +31,6 @@ namespace {
 namespace fs = std::filesystem;
 using fem::materials::PM4Sand;
 using fem::materials::PM4SandParameters;
-using fem::materials::Vector3;
 
 fs::path reference(const char* file) {
   return fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/up_dss_pm4sand/ref" / file;
@@ -62,59 +60,22 @@ PM4SandParameters script_material() {
   return p;
 }
 
-struct ColumnError {
-  double peak = 0.0;   ///< largest |reference value| of the column
-  double worst = 0.0;  ///< largest |fem - reference|
-  std::size_t row = 0; ///< where (1-based)
-};
-
-/// Drives the material through strain.out as the script does; returns the stress after each commit.
-std::vector<Vector3> replay(const std::vector<std::vector<double>>& strains, PM4SandParameters params) {
-  PM4Sand material(1, params);
-  std::vector<Vector3> stresses;
-  stresses.reserve(strains.size());
+TEST(PM4SandDss, GoldenStressPathWithinOnePercentOfEachColumnsPeak) {
+  const auto strains = test_support::read_numeric_table(reference("strain.out"));
+  const auto ref = test_support::read_numeric_table(reference("stress.out"));
+  ASSERT_EQ(strains.size(), 17640u);  // 100 + 25 + 25 steps before the cycles, 17490 cycling steps
+  ASSERT_NO_FATAL_FAILURE(test_support::check_golden_rows(strains, ref, 3));
+  // The script's commands at its rows (the file's header).
+  PM4Sand material(1, script_material());
   material.update_stage(0);
-  for (std::size_t i = 0; i < strains.size(); ++i) {
-    const std::size_t row = i + 1;
+  const auto fem = test_support::replay_strain_path(material, strains, [&](std::size_t row) {
     if (row == 126) {
       material.update_stage(1);
       material.set_parameter("FirstCall", 0.0);
     }
     if (row == 151) material.set_parameter("poissonRatio", 0.3);
-    material.set_trial_strain(Vector3(strains[i][1], strains[i][2], strains[i][3]));
-    material.commit_state();
-    stresses.push_back(material.stress());
-  }
-  return stresses;
-}
-
-std::array<ColumnError, 3> compare(const std::vector<std::vector<double>>& ref, const std::vector<Vector3>& fem) {
-  std::array<ColumnError, 3> e;
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    for (int j = 0; j < 3; ++j) {
-      e[j].peak = std::max(e[j].peak, std::abs(ref[i][j + 1]));
-      const double d = std::abs(fem[i][j] - ref[i][j + 1]);
-      if (d > e[j].worst) {
-        e[j].worst = d;
-        e[j].row = i + 1;
-      }
-    }
-  }
-  return e;
-}
-
-TEST(PM4SandDss, GoldenStressPathWithinOnePercentOfEachColumnsPeak) {
-  const auto strains = test_support::read_numeric_table(reference("strain.out"));
-  const auto ref = test_support::read_numeric_table(reference("stress.out"));
-  ASSERT_EQ(strains.size(), 17640u);  // 100 + 25 + 25 steps before the cycles, 17490 cycling steps
-  ASSERT_EQ(ref.size(), strains.size());
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    ASSERT_EQ(strains[i].size(), 4u);
-    ASSERT_EQ(ref[i].size(), 4u);
-    ASSERT_EQ(strains[i][0], ref[i][0]);
-  }
-  const std::vector<Vector3> fem = replay(strains, script_material());
-  const auto errors = compare(ref, fem);
+  });
+  const auto errors = test_support::column_errors(ref, fem);
   const char* names[3] = {"sxx", "syy", "sxy"};
   for (int j = 0; j < 3; ++j) {
     std::printf("%s: peak |ref| %.6g kPa, largest error %.4g kPa (%.3f %% of peak) at row %zu: fem %.6g, ref %.6g\n",

@@ -36,8 +36,6 @@
 // / pow / log differ in the last bit may land on the other branch; see the numbers above).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -45,6 +43,7 @@
 
 #include "fem_tcl/materials/pm4silt.hpp"
 #include "support/recorder_compare.hpp"
+#include "support/strain_path_replay.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -54,7 +53,6 @@ using fem::materials::NDMaterial;
 using fem::materials::PlaneType;
 using fem::materials::PM4Silt;
 using fem::materials::PM4SiltParameters;
-using fem::materials::Vector3;
 
 fs::path reference(const char* file) {
   return fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/opensees/up_dss_pm4silt/ref" / file;
@@ -72,67 +70,25 @@ PM4SiltParameters script_material() {
   return p;
 }
 
-struct ColumnError {
-  double peak = 0.0;    ///< largest |reference value| of the column
-  double worst = 0.0;   ///< largest |fem - reference|
-  std::size_t row = 0;  ///< where (1-based)
-};
-
-/// Drives an element's copy of the material through strain.out as the script does; returns the stress after each
-/// commit and the material at the end.
-std::vector<Vector3> replay(const std::vector<std::vector<double>>& strains, std::unique_ptr<NDMaterial>* end = nullptr) {
+TEST(PM4SiltDss, GoldenStressPathAgainstOnePercentOfEachColumnsPeak) {
+  const auto strains = test_support::read_numeric_table(reference("strain.out"));
+  const auto ref = test_support::read_numeric_table(reference("stress.out"));
+  ASSERT_EQ(strains.size(), 25692u);  // 100 + 25 + 25 steps before the cycles, 25542 cycling steps
+  ASSERT_NO_FATAL_FAILURE(test_support::check_golden_rows(strains, ref, 3));
+  // An element's copy of the material, driven with the script's commands at its rows (the file's header).
   const PM4Silt parsed(1, script_material());
-  std::unique_ptr<NDMaterial> material = parsed.copy_for(PlaneType::PlaneStrain);
-  std::vector<Vector3> stresses;
-  stresses.reserve(strains.size());
+  const std::unique_ptr<NDMaterial> material = parsed.copy_for(PlaneType::PlaneStrain);
   material->update_stage(0);
-  for (std::size_t i = 0; i < strains.size(); ++i) {
-    const std::size_t row = i + 1;
+  const auto fem = test_support::replay_strain_path(*material, strains, [&](std::size_t row) {
     if (row == 126) {
       material->update_stage(1);
       material->set_parameter("FirstCall", 0.0);
     }
     if (row == 151) material->set_parameter("poissonRatio", 0.3);
-    material->set_trial_strain(Vector3(strains[i][1], strains[i][2], strains[i][3]));
-    material->commit_state();
-    stresses.push_back(material->stress());
-  }
-  if (end != nullptr) *end = std::move(material);
-  return stresses;
-}
-
-/// The largest errors over rows [first, last) (0-based), each column's peak over the whole record.
-std::array<ColumnError, 3> compare(const std::vector<std::vector<double>>& ref, const std::vector<Vector3>& fem,
-                                   std::size_t first, std::size_t last) {
-  std::array<ColumnError, 3> e;
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    for (int j = 0; j < 3; ++j) {
-      e[j].peak = std::max(e[j].peak, std::abs(ref[i][j + 1]));
-      const double d = std::abs(fem[i][j] - ref[i][j + 1]);
-      if (i >= first && i < last && d > e[j].worst) {
-        e[j].worst = d;
-        e[j].row = i + 1;
-      }
-    }
-  }
-  return e;
-}
-
-TEST(PM4SiltDss, GoldenStressPathAgainstOnePercentOfEachColumnsPeak) {
-  const auto strains = test_support::read_numeric_table(reference("strain.out"));
-  const auto ref = test_support::read_numeric_table(reference("stress.out"));
-  ASSERT_EQ(strains.size(), 25692u);  // 100 + 25 + 25 steps before the cycles, 25542 cycling steps
-  ASSERT_EQ(ref.size(), strains.size());
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    ASSERT_EQ(strains[i].size(), 4u);
-    ASSERT_EQ(ref[i].size(), 4u);
-    ASSERT_EQ(strains[i][0], ref[i][0]);
-  }
-  std::unique_ptr<NDMaterial> material;
-  const std::vector<Vector3> fem = replay(strains, &material);
-  const auto errors = compare(ref, fem, 0, ref.size());
-  const auto before = compare(ref, fem, 0, 170);            // rows 1..170: consolidation to the first jump
-  const auto after = compare(ref, fem, 400, ref.size());    // rows 401..: after the first loading's transient
+  });
+  const auto errors = test_support::column_errors(ref, fem, 0, ref.size());
+  const auto before = test_support::column_errors(ref, fem, 0, 170);          // rows 1..170: to the first jump
+  const auto after = test_support::column_errors(ref, fem, 400, ref.size());  // rows 401..: after the transient
   const char* names[3] = {"sxx", "syy", "sxy"};
   const double whole_record[3] = {0.01, 0.01, 0.03};         // fraction of the column's peak
   const double measured[3] = {0.00808, 0.00522, 0.02797};

@@ -319,6 +319,39 @@ TEST(LiquefiedStrength, RatioRuleGroupsStrengthsAndStartsTheSoftening) {
 }
 
 // Regrouping by material keeps each material's particles in order, renumbers the ids and says where each came from.
+// --effective-friction (Bishop & Morgenstern 1960: the strength on the effective stress, the pore pressure of the
+// transfer held): a particle below the threshold with pore pressure p and total mean stress sigma_m gets
+// tan(phi) = (1 - p / sigma_m) tan(phi'), on the 5 % grid; a liquefied one keeps its residual strength; one
+// without pore pressure keeps phi'.
+TEST(LiquefiedStrength, EffectiveFrictionHoldsThePorePressureOfTheTransfer) {
+  bridge::TransferState st = two_materials();
+  std::vector<mpm::io::ParticleRecord> particles(4);
+  // p 50 kPa on a total mean stress of 100 kPa (tan phi halved), 25 of 100 (x 0.75), liquefied, no p
+  const std::vector<mpm::io::PorePressureRecord> rows = {{50e3, 50e3, 0.3}, {25e3, 50e3, 0.1}, {80e3, 20e3, 0.9},
+                                                         {0.0, 50e3, 0.0}};
+  for (auto& r : particles) r.stress_xx = r.stress_yy = r.stress_zz = -100e3;
+  bridge::LiquefiedOptions o;
+  o.rule = bridge::LiquefiedOptions::Rule::Ratio;
+  o.ratio = 0.1;
+  o.effective_friction = true;
+  const auto summary = bridge::assign_liquefied_strength(st, particles, rows, {}, o);
+  const double tan_phi = std::tan(32 * std::numbers::pi / 180);
+  ASSERT_EQ(summary.effective_materials.size(), 2u);
+  EXPECT_CLOSE(std::tan(st.materials[particles[0].material_id].friction), 0.5 * tan_phi, 0, 0.025);
+  EXPECT_CLOSE(std::tan(st.materials[particles[1].material_id].friction), 0.75 * tan_phi, 0, 0.025);
+  EXPECT_EQ(st.materials[particles[2].material_id].friction, 0.0);        // liquefied: phi 0, Sr
+  EXPECT_EQ(particles[3].material_id, 0u);                                // no pore pressure: phi'
+  EXPECT_EQ(particles[0].nstate_vars, 7u);
+  EXPECT_TRUE(has(summary.effective_friction, "tan(phi) = (1 - p / sigma_m) tan(phi')")) << summary.effective_friction;
+  // Without the option the particles below the threshold keep phi' on the total stress.
+  bridge::TransferState plain = two_materials();
+  std::vector<mpm::io::ParticleRecord> same(4);
+  for (auto& r : same) r.stress_xx = r.stress_yy = r.stress_zz = -100e3;
+  o.effective_friction = false;
+  EXPECT_TRUE(bridge::assign_liquefied_strength(plain, same, rows, {}, o).effective_materials.empty());
+  EXPECT_EQ(same[0].material_id, 0u);
+}
+
 TEST(LiquefiedStrength, GroupByMaterialIsStableAndRenumbers) {
   bridge::ParticleList particles(5);
   const unsigned material[5] = {0, 2, 1, 2, 0};

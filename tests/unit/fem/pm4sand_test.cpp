@@ -15,6 +15,7 @@
 #include "common/input_error.hpp"
 #include "fem_tcl/materials/pm4sand.hpp"
 #include "support/input_error_message.hpp"
+#include "support/pm4_paths.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -53,12 +54,7 @@ Vector3 isotropic_strain(const PM4SandParameters& p, double pressure) {
 
 /// A material consolidated isotropically to p (stage 0), then stage 1 and FirstCall, as scripts do.
 PM4Sand consolidated(const PM4SandParameters& p, double pressure) {
-  PM4Sand m(1, p);
-  m.set_trial_strain(isotropic_strain(p, pressure));
-  m.commit_state();
-  m.update_stage(1);
-  m.set_parameter("FirstCall", 0.0);
-  return m;
+  return test_support::consolidated(PM4Sand(1, p), isotropic_strain(p, pressure));
 }
 
 // OpenSees' constructor: h0 = max(0.3, (0.25 + Dr) / 2); ce = 0.5 (Dr < 0.55), 0.5 - 1.5 (Dr - 0.55)
@@ -268,73 +264,19 @@ TEST(PM4SandStages, ElasticStageModuliIgnorePressurePlasticStageFollowsSqrtP) {
 /// Undrained simple shear (exx = eyy = 0) from K0 = 0.5 consolidation at 100 kPa, cycles of +-0.3 % shear strain
 /// in steps of `step`.
 std::vector<Vector3> cyclic_path(double step = 2e-5) {
-  std::vector<Vector3> path;
-  const Vector3 consolidation(0.0, -4.0e-4, 0.0);
-  for (int i = 1; i <= 20; ++i) path.push_back(consolidation * (i / 20.0));
-  double g = 0.0;
-  for (int cycle = 0; cycle < 3; ++cycle) {
-    for (double target : {3e-3, -3e-3, 0.0}) {
-      const int n = static_cast<int>(std::round(std::abs(target - g) / step));
-      const double start = g;
-      for (int i = 1; i <= n; ++i) path.push_back(consolidation + Vector3(0.0, 0.0, start + (target - start) * i / n));
-      g = target;
-    }
-  }
-  return path;
+  return test_support::undrained_cyclic_path(Vector3(0.0, -4.0e-4, 0.0), 3e-3, 3, step);
 }
 
-std::vector<Vector3> run_path(PM4Sand m, const std::vector<Vector3>& path, std::size_t switch_row = 20) {
-  std::vector<Vector3> out;
-  for (std::size_t i = 0; i < path.size(); ++i) {
-    if (i == switch_row) {
-      m.update_stage(1);
-      m.set_parameter("FirstCall", 0.0);
-    }
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-    out.push_back(m.stress());
-  }
-  return out;
+/// The stresses along the whole path, stage 1 and FirstCall before row 20.
+std::vector<Vector3> run_path(PM4Sand m, const std::vector<Vector3>& path) {
+  return test_support::drive(m, path, 0, path.size());
 }
 
 TEST(PM4SandState, CloneCarriesTheStateRevertRestoresTheCommit) {
   PM4Sand m(1, sand(0.45));
   const auto path = cyclic_path();
-  for (std::size_t i = 0; i < 200; ++i) {
-    if (i == 20) {
-      m.update_stage(1);
-      m.set_parameter("FirstCall", 0.0);
-    }
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-  }
-  const Vector3 committed = m.stress();
-  const auto fabric = *m.response("state");
-  const auto copy = m.clone();
-  EXPECT_EQ(copy->stress(), committed);
-  EXPECT_EQ(*copy->response("state"), fabric);
-  // A trial, then revert: the committed stress and state are back, and the same trial gives the same stress.
-  m.set_trial_strain(path[200]);
-  const Vector3 trial = m.stress();
-  EXPECT_NE(trial, committed);
-  m.revert_to_last_commit();
-  EXPECT_EQ(m.stress(), committed);
-  EXPECT_EQ(*m.response("state"), fabric);
-  m.set_trial_strain(path[200]);
-  EXPECT_EQ(m.stress(), trial);
-  // (A second trial without a revert would start from the moduli this one left, as OpenSees: quirk 6.)
-  m.revert_to_last_commit();
-  // The clone is independent: driving the original on leaves it where it was, and it follows the same path.
-  for (std::size_t i = 200; i < 260; ++i) {
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-  }
-  EXPECT_EQ(copy->stress(), committed);
-  for (std::size_t i = 200; i < 260; ++i) {
-    copy->set_trial_strain(path[i]);
-    copy->commit_state();
-  }
-  EXPECT_EQ(copy->stress(), m.stress());
+  test_support::drive(m, path, 0, 200);
+  test_support::expect_clone_and_revert(m, path, 200, 260);
   // copy_for gives the start state (zero stress, Ado / z_max as computed), keeping the stage.
   const auto fresh = m.copy_for(PlaneType::PlaneStrain);
   EXPECT_EQ(fresh->stress(), Vector3::Zero());
@@ -382,24 +324,9 @@ TEST(PM4SandState, IntegrationSchemesConvergeToTheDefault) {
 TEST(PM4SandCommands, ParametersResponsesAndJson) {
   PM4Sand m(2, sand(0.55));
   const auto path = cyclic_path();
-  for (std::size_t i = 0; i < 100; ++i) {
-    if (i == 20) {
-      EXPECT_TRUE(m.set_parameter("updateMaterialStage", 1.0));
-      EXPECT_TRUE(m.set_parameter("FirstCall", 1.0));
-    }
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-  }
+  test_support::drive(m, path, 0, 100);  // updateMaterialStage 1, FirstCall before row 20
   EXPECT_EQ(m.stage(), 1);
-  // OpenSees' response lengths: stress / strain 3, state 16, alpha, fabric, alpha_in, tracker 3; stress3D 6.
-  EXPECT_EQ(m.response("stress")->size(), 3u);
-  EXPECT_EQ(m.response("stresses")->size(), 3u);
-  EXPECT_EQ(m.response("strain")->size(), 3u);
-  EXPECT_EQ(m.response("state")->size(), 16u);
-  for (const char* name : {"alpha", "backstressratio", "fabric", "alpha_in", "alphain", "tracker", "trackers"})
-    EXPECT_EQ(m.response(name)->size(), 3u) << name;
-  EXPECT_EQ(m.response("stress3D")->size(), 6u);
-  EXPECT_FALSE(m.response("nonsense").has_value());
+  test_support::expect_pm4_response_lengths(m);
   const auto stress = *m.response("stress");
   EXPECT_EQ(stress[2], m.stress()[2]);
   EXPECT_EQ((*m.response("strain"))[1], path[99][1]);

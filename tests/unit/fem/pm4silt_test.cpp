@@ -17,6 +17,7 @@
 #include "common/input_error.hpp"
 #include "fem_tcl/materials/pm4silt.hpp"
 #include "support/input_error_message.hpp"
+#include "support/pm4_paths.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -56,12 +57,7 @@ Vector3 oedometric_strain(const PM4SiltParameters& p, double sigma_v) {
 
 /// Consolidated one-dimensionally to sigma_v in stage 0, then stage 1 and FirstCall, as scripts do.
 PM4Silt consolidated(const PM4SiltParameters& p, double sigma_v) {
-  PM4Silt m(1, p);
-  m.set_trial_strain(oedometric_strain(p, sigma_v));
-  m.commit_state();
-  m.update_stage(1);
-  m.set_parameter("FirstCall", 0.0);
-  return m;
+  return test_support::consolidated(PM4Silt(1, p), oedometric_strain(p, sigma_v));
 }
 
 TEST(PM4SiltParameters, TclDefaultsOfOpenSeesParser) {
@@ -359,58 +355,14 @@ TEST(PM4SiltStages, SuFactorShiftsTheStateParameter) {
 /// Undrained simple shear (exx = 0, eyy fixed) after K0 consolidation at 100 kPa, cycles of +-0.2 % shear strain
 /// in steps of `step`.
 std::vector<Vector3> cyclic_path(double step = 5e-6) {
-  std::vector<Vector3> path;
-  const Vector3 consolidation = oedometric_strain(silt(0.25), 100.0);
-  for (int i = 1; i <= 20; ++i) path.push_back(consolidation * (i / 20.0));
-  double g = 0.0;
-  for (int cycle = 0; cycle < 2; ++cycle) {
-    for (double target : {2e-3, -2e-3, 0.0}) {
-      const int n = static_cast<int>(std::round(std::abs(target - g) / step));
-      const double start = g;
-      for (int i = 1; i <= n; ++i) path.push_back(consolidation + Vector3(0.0, 0.0, start + (target - start) * i / n));
-      g = target;
-    }
-  }
-  return path;
+  return test_support::undrained_cyclic_path(oedometric_strain(silt(0.25), 100.0), 2e-3, 2, step);
 }
 
 TEST(PM4SiltState, CloneCarriesTheStateRevertRestoresTheCommit) {
   PM4Silt m(1, silt(0.25));
   const auto path = cyclic_path();
-  for (std::size_t i = 0; i < 300; ++i) {
-    if (i == 20) {
-      m.update_stage(1);
-      m.set_parameter("FirstCall", 0.0);
-    }
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-  }
-  const Vector3 committed = m.stress();
-  const auto state = *m.response("state");
-  const auto copy = m.clone();
-  EXPECT_EQ(copy->stress(), committed);
-  EXPECT_EQ(*copy->response("state"), state);
-  // A trial, then revert: the committed stress and state are back, and the same trial gives the same stress.
-  m.set_trial_strain(path[300]);
-  const Vector3 trial = m.stress();
-  EXPECT_NE(trial, committed);
-  m.revert_to_last_commit();
-  EXPECT_EQ(m.stress(), committed);
-  EXPECT_EQ(*m.response("state"), state);
-  m.set_trial_strain(path[300]);
-  EXPECT_EQ(m.stress(), trial);
-  m.revert_to_last_commit();
-  // The clone is independent and follows the same path.
-  for (std::size_t i = 300; i < 400; ++i) {
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-  }
-  EXPECT_EQ(copy->stress(), committed);
-  for (std::size_t i = 300; i < 400; ++i) {
-    copy->set_trial_strain(path[i]);
-    copy->commit_state();
-  }
-  EXPECT_EQ(copy->stress(), m.stress());
+  test_support::drive(m, path, 0, 300);
+  test_support::expect_clone_and_revert(m, path, 300, 400);
   // copy_for: the start state (zero stress), the stage kept, the derived S_u / z_max kept, M from the round trip
   // phi_cv = asin(M / 2) (OpenSees getCopy), equal to the last bits.
   const auto fresh = m.copy_for(PlaneType::PlaneStrain);
@@ -438,33 +390,14 @@ TEST(PM4SiltState, CloneCarriesTheStateRevertRestoresTheCommit) {
 // surface, where the schemes, like round-off, send the reversal memory different ways: see
 // tests/regression/fem/pm4silt_dss_test.cpp.)
 TEST(PM4SiltState, CyclicUndrainedLoadingAndTheIntegrationSchemes) {
-  std::vector<Vector3> path;
   const double G = 500.0 * kPatm, K = 2.0 / 3.0 * 1.3 / 0.4 * G;
   const Vector3 consolidation(-100.0 / (2.0 * K + 2.0 / 3.0 * G), -100.0 / (2.0 * K + 2.0 / 3.0 * G), 0.0);
-  for (int i = 1; i <= 20; ++i) path.push_back(consolidation * (i / 20.0));
-  double g = 0.0;
-  for (int cycle = 0; cycle < 2; ++cycle) {
-    for (double target : {1e-2, -1e-2, 0.0}) {
-      const int n = static_cast<int>(std::round(std::abs(target - g) / 5e-6));
-      const double start = g;
-      for (int i = 1; i <= n; ++i) path.push_back(consolidation + Vector3(0.0, 0.0, start + (target - start) * i / n));
-      g = target;
-    }
-  }
+  const auto path = test_support::undrained_cyclic_path(consolidation, 1e-2, 2, 5e-6);
   const auto run = [&](int scheme) {
     PM4SiltParameters p = silt(0.25);
     p.scheme = scheme;
     PM4Silt m(1, p);
-    std::vector<Vector3> out;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-      if (i == 20) {
-        m.update_stage(1);
-        m.set_parameter("FirstCall", 0.0);
-      }
-      m.set_trial_strain(path[i]);
-      m.commit_state();
-      out.push_back(m.stress());
-    }
+    const std::vector<Vector3> out = test_support::drive(m, path, 0, path.size());
     return std::make_pair(out, *m.response("fabric"));
   };
   const auto [reference, fabric] = run(5);
@@ -486,25 +419,9 @@ TEST(PM4SiltState, CyclicUndrainedLoadingAndTheIntegrationSchemes) {
 TEST(PM4SiltCommands, ParametersResponsesAndJson) {
   PM4Silt m(2, silt(0.25));
   const auto path = cyclic_path();
-  for (std::size_t i = 0; i < 200; ++i) {
-    if (i == 20) {
-      EXPECT_TRUE(m.set_parameter("updateMaterialStage", 1.0));
-      EXPECT_TRUE(m.set_parameter("FirstCall", 1.0));
-    }
-    m.set_trial_strain(path[i]);
-    m.commit_state();
-  }
+  test_support::drive(m, path, 0, 200);  // updateMaterialStage 1, FirstCall before row 20
   EXPECT_EQ(m.stage(), 1);
-  // OpenSees' response lengths: stress / strain 3, state 16, alpha, fabric, alpha_in, tracker 3; stress3D 6.
-  EXPECT_EQ(m.response("stress")->size(), 3u);
-  EXPECT_EQ(m.response("stresses")->size(), 3u);
-  EXPECT_EQ(m.response("strain")->size(), 3u);
-  EXPECT_EQ(m.response("strains")->size(), 3u);
-  EXPECT_EQ(m.response("state")->size(), 16u);
-  for (const char* name : {"alpha", "backstressratio", "fabric", "alpha_in", "alphain", "tracker", "trackers"})
-    EXPECT_EQ(m.response(name)->size(), 3u) << name;
-  EXPECT_EQ(m.response("stress3D")->size(), 6u);
-  EXPECT_FALSE(m.response("nonsense").has_value());
+  test_support::expect_pm4_response_lengths(m);
   // Signs: stress and strain tension positive (the model's are compression positive); state[12] the void ratio
   // e = eInit - (1 + eInit) tr(strain, compression positive); tracker (0, D, 0).
   const Vector3 e = path[199];
