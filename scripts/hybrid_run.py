@@ -27,6 +27,7 @@ and DIR receives what an engineer looks at:
     particles_T.png      the particles at T and
     particles_end.png    at the end, coloured by |displacement| since the start of the FEM run
     runout.png, energy.png   runout and front; potential-energy loss and kinetic energy against time
+    ru_T.png             for a u-p model (pp.out): the particles at T coloured by r_u
     summary.md           one page: the run, the transfer, the result, the figures
     fem/, mpm/           the FEM output and the MPM working folder (deck, results/<uuid>/particles*.h5)
 
@@ -69,7 +70,7 @@ DRIVER_OPTIONS = {"--transfer": True, "--duration": True, "--out": True, "--bin"
                   "--output-every": True, "--moved": True, "--jobs": True, "--help": False, "-h": False}
 # what the driver writes into DIR (removed first, so a failed run never leaves an older one behind)
 OUTPUTS = ("fem", "mpm", "series.csv", "summary.md", "fem_mesh_T.png", "particles_T.png", "particles_end.png",
-           "runout.png", "energy.png", "window.csv", "window.png")
+           "runout.png", "energy.png", "ru_T.png", "window.csv", "window.png")
 # the r_u above which fem2mpm marks a particle liquefied, unless --liquefied says otherwise (its default)
 LIQUEFIED_DEFAULT = 0.7
 SET_BY_DRIVER = ("--model", "--disp", "--vel", "--stress", "--loads", "--time", "--row", "--out")
@@ -319,7 +320,7 @@ def write_summary(out, args, t_transfer, command, forward, script_args, walls, r
                   "final runout." % end["max_speed"], ""]
     lines += ["Series: `series.csv`; transfer report: `mpm/report.json`; particles: `mpm/%s`." %
               os.path.relpath(pipeline.results_dir(os.path.join(out, "mpm")), os.path.join(out, "mpm")), ""]
-    for key in ("fem", "T", "end", "runout", "energy"):
+    for key in ("fem", "ru", "T", "end", "runout", "energy"):
         if key in paths:
             lines.append("![%s](%s)" % (key, os.path.basename(paths[key])))
     tmp = os.path.join(out, "summary.md.tmp")
@@ -348,6 +349,25 @@ def liquefied_depth(transfer_file, threshold):
     for c, yy in zip(column, y):
         top[c] = max(top.get(c, -np.inf), yy)
     return float(max(top[c] - yy for c, yy in zip(column[liquefied], y[liquefied])))
+
+
+def ru_figure(out, transfer_file, t_transfer, spacing):
+    """ru_T.png: the particles at the transfer coloured by r_u (the /pore_pressure dataset fem2mpm writes for a
+    u-p model); None for a dry transfer."""
+    import h5py
+    with h5py.File(transfer_file, "r") as f:
+        if "pore_pressure" not in f:
+            return None
+        ru = np.asarray(f["pore_pressure"])[:, 2]
+        x, y = np.asarray(f["table"]["coord_x"]), np.asarray(f["table"]["coord_y"])
+    plt = plots.pyplot()
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    sc = plots.plot_particles(ax, x, y, np.clip(ru, 0.0, 1.0), spacing, 0.0, 1.0, cmap="magma_r")
+    fig.colorbar(sc, ax=ax, label="r_u = excess pore pressure / sigma'v0", shrink=0.8)
+    ax.set_title("excess pore-pressure ratio at the transfer, t = %g s" % t_transfer, fontsize=9)
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    return plots.save(fig, os.path.join(out, "ru_T.png"))
 
 
 def fem_min_jacobian_ratio(fem_dir, t):
@@ -409,6 +429,10 @@ def run_transfer(args, bins, fem_dir, out, t_transfer, command, forward, script_
     report.setdefault("particles", len(states["T"]["x"]))
     spacing = float(np.sqrt(np.median(states["T"]["volume"])))
     paths = figures(out, fem_dir, t_transfer, rows, states, spacing)
+    transfer_file = pipeline.resume_file(os.path.join(mpm_dir, "mpm.json"), deck)
+    ru_png = ru_figure(out, transfer_file, t_transfer, spacing)
+    if ru_png:
+        paths["ru"] = ru_png
     write_summary(out, args, t_transfer, command, forward, script_args, walls, rows, direction, report, deck, len(xy),
                   len(elems), fem_end, paths, warnings)
     threshold = LIQUEFIED_DEFAULT
@@ -419,7 +443,7 @@ def run_transfer(args, bins, fem_dir, out, t_transfer, command, forward, script_
             threshold = float(w.split("=", 1)[1])
     end = dict(rows[-1])
     end["transfer"] = t_transfer
-    end["liquefied_depth"] = liquefied_depth(pipeline.resume_file(os.path.join(mpm_dir, "mpm.json"), deck), threshold)
+    end["liquefied_depth"] = liquefied_depth(transfer_file, threshold)
     end["fem_min_jacobian_ratio"] = fem_min_jacobian_ratio(fem_dir, t_transfer)
     end["direction"] = direction
     return end
@@ -441,7 +465,7 @@ def write_window(out, ends, args):
     os.replace(tmp, os.path.join(out, "window.csv"))
     plt = plots.pyplot()
     t = [e["transfer"] for e in ends]
-    fig, axs = plt.subplots(1, 4, figsize=(13, 3.2))
+    fig, axs = plt.subplots(1, 4, figsize=(14, 3.4))
     panels = (("runout", "runout at the end (m)"), ("moved_mass_fraction", "moving mass fraction"),
               ("liquefied_depth", "liquefied depth at T (m)"), ("fem_min_jacobian_ratio", "FEM min det J / det J0 at T"))
     for ax, (key, label) in zip(axs, panels):
@@ -452,6 +476,7 @@ def write_window(out, ends, args):
     axs[3].axhline(0.0, color="r", lw=0.8)
     fig.suptitle("the transfer window of %s (MPM %g s after each T)" % (os.path.basename(args.model), args.duration),
                  fontsize=9)
+    fig.tight_layout()
     return plots.save(fig, os.path.join(out, "window.png"))
 
 
