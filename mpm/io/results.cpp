@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "common/atomic_file.hpp"
+#include "common/input_error.hpp"
 #include "mpm/io/particle_fields.hpp"
 #include "mpm/io/resume_extras.hpp"
 #include "mpm/io/vtk_files.hpp"
@@ -161,9 +162,27 @@ fs::path ResultsWriter::particle_file(long long step) const {
 
 bool ResultsWriter::writes_vtk() const { return !deck_.output.vtk_fields.empty() || !deck_.output.vtk_statevars.empty(); }
 
+void ResultsWriter::check_output_targets() const {
+  if (fs::exists(folder_) && !fs::is_directory(folder_))
+    throw common::InputError(folder_.string() + ": the results folder (post_processing.path / uuid) exists and is "
+                             "not a directory");
+  std::vector<std::string> names{"grid.vtr", kStartFile, "series.csv", "particles.xdmf"};
+  const long long every = deck_.output.output_steps;
+  for (long long step = (deck_.first_step + every - 1) / every * every; step < deck_.analysis.nsteps; step += every)
+    if (deck_.output.writes_particles(step)) names.push_back(particle_file_name(step, deck_.analysis.nsteps));
+  if (writes_vtk()) {
+    const std::size_t h5_files = names.size();
+    for (std::size_t i = 1; i < h5_files; ++i)
+      if (names[i].ends_with(".h5")) names.push_back(vtp_name(names[i]));
+    names.push_back("particles.pvd");
+  }
+  for (const auto& name : names) common::check_output_target(folder_ / name);
+}
+
 void ResultsWriter::prepare() {
   if (prepared_) return;
   prepared_ = true;
+  check_output_targets();
   fs::create_directories(folder_);
   write_grid_vtr(folder_ / "grid.vtr", deck_);
   if (!deck_.resumed) return;

@@ -86,6 +86,10 @@ class ResultsWriter {
  private:
   static constexpr const char* kStartFile = "initial_state.h5";
   void prepare();
+  /// Throws common::InputError naming the first output path of the run (the folder, grid.vtr, the start
+  /// state, every particle file the output steps will write, series.csv, particles.xdmf / .pvd) that
+  /// exists and is not a regular file, before anything is written.
+  void check_output_targets() const;
   void write_particles(long long step, double time, std::span<const ParticleRecord> particles,
                        const ParticleFileExtras& extras);
   void add_frame(const XdmfFrame& frame, std::span<const ParticleRecord> particles);

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/input_error.hpp"
 #include "mpm/io/particle_fields.hpp"
 #include "mpm/io/results.hpp"
 #include "support/tolerance.hpp"
@@ -252,5 +253,26 @@ TEST(Results, StartFrameGridAndVtkFiles) {
   const std::string xdmf2 = slurp(folder / "particles.xdmf");
   EXPECT_NE(xdmf2.find("<Time Value=\"0\"/>"), std::string::npos) << xdmf2.substr(0, 400);
   EXPECT_EQ(xdmf2.find("<Time Value=\"0.002\"/>"), std::string::npos);
+  fs::remove_all(deck.working_dir);
+}
+
+TEST(Results, EveryOutputPathIsCheckedBeforeTheFirstFileIsWritten) {
+  // A particle file of a later output step, particles.xdmf, or the results folder itself that is not a
+  // regular file (directory) is refused with common::InputError before grid.vtr or the start state exist.
+  for (const std::string blocked : {"particles050.h5", "particles.xdmf", "series.csv"}) {
+    mpm::io::Deck deck = output_deck("geoflow_results_blocked_");
+    const fs::path folder = deck.working_dir / "results/run";
+    fs::create_directories(folder / blocked);
+    mpm::io::ResultsWriter w(deck);
+    EXPECT_THROW(w.write_start(0, four_particles()), common::InputError) << blocked;
+    EXPECT_FALSE(fs::exists(folder / "grid.vtr")) << blocked;
+    EXPECT_FALSE(fs::exists(folder / "initial_state.h5")) << blocked;
+    fs::remove_all(deck.working_dir);
+  }
+  mpm::io::Deck deck = output_deck("geoflow_results_folder_");
+  fs::create_directories(deck.working_dir / "results");
+  std::ofstream(deck.working_dir / "results/run") << "a file where the results folder goes\n";
+  mpm::io::ResultsWriter w(deck);
+  EXPECT_THROW(w.write_start(0, four_particles()), common::InputError);
   fs::remove_all(deck.working_dir);
 }
