@@ -115,33 +115,9 @@ def transfer_times(text):
 
 
 def split_arguments(argv):
-    """(driver words, fem2mpm words, script words): `--` ends the options; the driver's own options (and
-    their values) and MODEL (the first word that is not an option or a value) go to the driver."""
-    script = []
-    if "--" in argv:
-        k = argv.index("--")
-        argv, script = argv[:k], argv[k + 1:]
-    driver, forward, model_seen = [], [], False
-    i = 0
-    while i < len(argv):
-        w = argv[i]
-        name = w.split("=", 1)[0]
-        if name in DRIVER_OPTIONS:
-            driver.append(w)
-            if DRIVER_OPTIONS[name] and "=" not in w:
-                if i + 1 >= len(argv) or argv[i + 1].startswith("--"):
-                    pipeline.die(PROG, "option %s needs a value" % w)
-                driver.append(argv[i + 1])
-                i += 1
-        elif not w.startswith("-") and not model_seen and (not forward or not forward[-1].startswith("-")):
-            driver.append(w)
-            model_seen = True
-        else:
-            if name in SET_BY_DRIVER:
-                pipeline.die(PROG, "option %s is set by the driver (the FEM output of the script, --transfer, --out)" % name)
-            forward.append(w)
-        i += 1
-    return driver, forward, script
+    """(driver words, fem2mpm words, script words), pipeline.split_words with the driver's options."""
+    return pipeline.split_words(PROG, argv, DRIVER_OPTIONS, SET_BY_DRIVER,
+                                "the driver (the FEM output of the script, --transfer, --out)")
 
 
 def option_given(words, name):

@@ -154,31 +154,8 @@ def float_list(text):
 
 
 def split_arguments(argv):
-    """(suite words, hybrid_run words, script words), as hybrid_run.py splits its own: `--` ends the options;
-    the suite's options (and values) and MODEL (the first word that is not an option or a value) are the suite's."""
-    script = []
-    if "--" in argv:
-        k = argv.index("--")
-        argv, script = argv[:k], argv[k + 1:]
-    own, forward, model_seen = [], [], False
-    i = 0
-    while i < len(argv):
-        w = argv[i]
-        name = w.split("=", 1)[0]
-        if name in OWN_OPTIONS:
-            own.append(w)
-            if OWN_OPTIONS[name] and "=" not in w:
-                if i + 1 >= len(argv) or argv[i + 1].startswith("--"):
-                    pipeline.die(PROG, "option %s needs a value" % w)
-                own.append(argv[i + 1])
-                i += 1
-        elif not w.startswith("-") and not model_seen and (not forward or not forward[-1].startswith("-")):
-            own.append(w)
-            model_seen = True
-        else:
-            forward.append(w)
-        i += 1
-    return own, forward, script
+    """(suite words, hybrid_run words, script words), as hybrid_run.py splits its own (pipeline.split_words)."""
+    return pipeline.split_words(PROG, argv, OWN_OPTIONS)
 
 
 def option_value(words, name):

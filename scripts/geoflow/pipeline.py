@@ -190,3 +190,35 @@ def die(prog, message, code=2):
     """One line on stderr, exit code (2: bad input)."""
     print("%s: error: %s" % (prog, message), file=sys.stderr)
     sys.exit(code)
+
+
+def split_words(prog, argv, own_options, refused=(), refused_why=""):
+    """(own words, forwarded words, script words) of a driver's command line: `--` ends the options; the
+    driver's own options (own_options: name -> whether it takes a value) with their values, and MODEL (the
+    first word that is not an option or a value) are its own; the rest is forwarded. An option in `refused`
+    is one line on stderr and exit 2 (refused_why says who sets it)."""
+    script = []
+    if "--" in argv:
+        k = argv.index("--")
+        argv, script = argv[:k], argv[k + 1:]
+    own, forward, model_seen = [], [], False
+    i = 0
+    while i < len(argv):
+        w = argv[i]
+        name = w.split("=", 1)[0]
+        if name in own_options:
+            own.append(w)
+            if own_options[name] and "=" not in w:
+                if i + 1 >= len(argv) or argv[i + 1].startswith("--"):
+                    die(prog, "option %s needs a value" % w)
+                own.append(argv[i + 1])
+                i += 1
+        elif not w.startswith("-") and not model_seen and (not forward or not forward[-1].startswith("-")):
+            own.append(w)
+            model_seen = True
+        else:
+            if name in refused:
+                die(prog, "option %s is set by %s" % (name, refused_why))
+            forward.append(w)
+        i += 1
+    return own, forward, script
