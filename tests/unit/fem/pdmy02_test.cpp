@@ -112,7 +112,8 @@ TEST(PressureDependMultiYield02, DefaultsAreOpenSees) {
   // The trailing c, Hv, Pv that OpenSees' parser also reads.
   auto more = golden_words();
   more.insert(more.end(), {"0.5", "2.0", "1.5"});
-  const auto& q = as_pdmy(parse(more)).parameters();
+  const auto with_more = parse(more);
+  const auto& q = as_pdmy(with_more).parameters();
   EXPECT_DOUBLE_EQ(q.cohesion, 0.5);
   EXPECT_DOUBLE_EQ(q.hv, 2.0);
   EXPECT_DOUBLE_EQ(q.pv, 1.5);
