@@ -200,7 +200,7 @@ int run(const CliOptions& o, const CLI::App& app, std::ostream& out, std::ostrea
   ro.plane_stress = o.plane_stress;
 
   MappingOptions mo;
-  if (o.ppd < 1 || o.ppd > 10) throw common::InputError("--ppd", "expected 1 to 10 particles per direction");
+  if (o.ppd < 1 || o.ppd > 32) throw common::InputError("--ppd", "expected 1 to 32 particles per direction");
   mo.particles_per_direction = o.ppd;
   if (o.recovery == "idw") mo.recovery = Recovery::InverseDistance;
   else if (o.recovery == "spr") mo.recovery = Recovery::PatchRecovery;
