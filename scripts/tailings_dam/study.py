@@ -14,7 +14,7 @@ mpm (10 s of runout, 1 m cells, 8 x 8 particles per 4 m element: 2 x 2 per cell,
      plastic deviatoric strains 0 and 0.5 (the authors: runout substantially larger when the strength softens);
   3. the MPM cell, at T = 12 s: 2 m cells with 2 x 2 particles per cell and with the 1 m runs' particles (4 x 4),
      1 m (2 x 2), 0.5 m with the 1 m runs' particles (1 per cell) and with 2 x 2 per cell (4 times the particles,
-     the longest run: ~10 min alone): the issue asks halving the cell to change the runout by less than 5 %.
+     the longest run: 12 min alone): the issue asks halving the cell to change the runout by less than 5 %.
 Writes study.csv (one row per run), study.png and study.md into --out. Runout: the largest horizontal travel of
 a particle in the 10 s after T (scripts/hybrid_run.py's definition); liquefied depth: the deepest particle with
 r_u >= 0.7 below the ground surface at T. --quick: T = 8, 12 only, and no other cells.
