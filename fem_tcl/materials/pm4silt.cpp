@@ -286,6 +286,12 @@ void PM4Silt::initialize(const Vector3& stress) {
   PM4SiltParameters& P = params_;
   const double p0 = begin_initialization(initial, P.P_atm / 200.0);
   Carried& c = trial_.carried;
+  // S_u from Su_Rat needs a compressive sigma'yy: at zero or tensile effective stress OpenSees takes the log of
+  // p_cs <= 0 below and every stress after it is NaN (found by fuzzing: an undrained DSS at zero effective stress).
+  if (P.Su <= 0.0 && !(initial[1] > 0.0))
+    throw common::InputError(where(), "S_u = Su_Rat sigma'yy needs a compressive vertical effective stress when the "
+                                      "material initialises (FirstCall), got sigma'yy = " + number_text(-initial[1]) +
+                                      " (consolidate first, or give S_u)");
   if (P.Su <= 0.0) P.Su = P.Su_Rat * initial[1];
   else P.Su_Rat = P.Su / initial[1];
   p_cs_ = 2.0 * P.Su / Mc_;
