@@ -28,7 +28,7 @@ std::vector<Matrix2> particle_velocity_gradients(const TransferState& state, con
   return out;
 }
 
-std::vector<Matrix2> apic_matrices(std::span<const mpm::io::ParticleRecord> particles, std::span<const Matrix2> gradients,
+std::vector<Matrix2> apic_matrices(std::span<const mpm::ParticleRecord> particles, std::span<const Matrix2> gradients,
                                    const GridSpec& grid) {
   if (gradients.size() != particles.size()) throw std::logic_error("apic_matrices: one gradient per particle expected");
   std::vector<Matrix2> out(particles.size());

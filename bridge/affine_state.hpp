@@ -27,7 +27,7 @@ std::vector<Matrix2> particle_velocity_gradients(const TransferState& state, con
 
 /// APIC's matrices B_p = L_p D_p on `grid` (D_p diagonal: uGIMP with the particle's half-size nsize h / 4,
 /// or bilinear, as mpm/core/velocity_transfer.hpp computes it), for mpm's "/apic_affine" dataset.
-std::vector<Matrix2> apic_matrices(std::span<const mpm::io::ParticleRecord> particles, std::span<const Matrix2> gradients,
+std::vector<Matrix2> apic_matrices(std::span<const mpm::ParticleRecord> particles, std::span<const Matrix2> gradients,
                                    const GridSpec& grid);
 
 }  // namespace bridge

@@ -282,7 +282,7 @@ int run(const CliOptions& o, const CLI::App& app, std::ostream& out, std::ostrea
     liquefied = assign_liquefied_strength(assembled.state, particles, pore.rows, pore.shear_strain, lo);
     if (!liquefied.materials.empty()) {
       regrouped = group_by_material(particles);
-      std::vector<mpm::io::PorePressureRecord> rows(regrouped.size());
+      std::vector<mpm::PorePressureRecord> rows(regrouped.size());
       std::vector<std::int64_t> new_id(regrouped.size());
       for (std::size_t k = 0; k < regrouped.size(); ++k) {
         rows[k] = pore.rows[regrouped[k]];

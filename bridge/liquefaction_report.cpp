@@ -62,8 +62,8 @@ double GroundSurface::height(double x) const {
   return top;
 }
 
-LiquefactionReport make_liquefaction_report(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
-                                            std::span<const mpm::io::PorePressureRecord> rows, double threshold,
+LiquefactionReport make_liquefaction_report(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
+                                            std::span<const mpm::PorePressureRecord> rows, double threshold,
                                             std::size_t no_reference, const LiquefiedSummary& strength) {
   LiquefactionReport r;
   r.threshold = threshold;

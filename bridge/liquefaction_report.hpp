@@ -57,8 +57,8 @@ struct LiquefactionReport {
 };
 
 /// The figures of `particles` (after the strengths were assigned) and their pore pressure rows (same order).
-LiquefactionReport make_liquefaction_report(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
-                                            std::span<const mpm::io::PorePressureRecord> rows, double threshold,
+LiquefactionReport make_liquefaction_report(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
+                                            std::span<const mpm::PorePressureRecord> rows, double threshold,
                                             std::size_t no_reference, const LiquefiedSummary& strength);
 
 /// The report's lines for the terminal (each starting with two spaces, ending with a newline).

@@ -146,14 +146,14 @@ namespace {
 /// --effective-friction (liquefied_strength.hpp): the particles at or below the threshold whose material is
 /// frictional get tan(phi_eq) = (1 - p / sigma_m) tan(phi'), rounded to a geometric grid (--strength-step,
 /// widened to at most max_materials values), one material per FEM material and grid value.
-void apply_effective_friction(TransferState& state, std::span<mpm::io::ParticleRecord> particles,
-                              std::span<const mpm::io::PorePressureRecord> rows, const LiquefiedOptions& o,
+void apply_effective_friction(TransferState& state, std::span<mpm::ParticleRecord> particles,
+                              std::span<const mpm::PorePressureRecord> rows, const LiquefiedOptions& o,
                               LiquefiedSummary& out) {
   using Key = std::tuple<unsigned, long long>;
   std::vector<double> tan_eq(particles.size(), 0.0);
   std::size_t reduced = 0;
   for (std::size_t k = 0; k < particles.size(); ++k) {
-    const mpm::io::ParticleRecord& r = particles[k];
+    const mpm::ParticleRecord& r = particles[k];
     const MpmMaterial& m = state.materials[r.material_id];
     if (rows[k].ru > o.threshold || m.type != MpmMaterial::Type::MohrCoulomb2D || !(m.friction > 0)) continue;
     const double sigma_m = -(r.stress_xx + r.stress_yy + r.stress_zz) / 3.0;  // total, compression positive
@@ -173,7 +173,7 @@ void apply_effective_friction(TransferState& state, std::span<mpm::io::ParticleR
   std::map<Key, unsigned> id_of;
   for (std::size_t k = 0; k < particles.size(); ++k) {
     if (!(tan_eq[k] > 0)) continue;
-    mpm::io::ParticleRecord& r = particles[k];
+    mpm::ParticleRecord& r = particles[k];
     const long long grid = std::llround(std::log(tan_eq[k]) / log_step);
     const Key key{r.material_id, grid};
     auto it = id_of.find(key);
@@ -206,8 +206,8 @@ void apply_effective_friction(TransferState& state, std::span<mpm::io::ParticleR
 
 }  // namespace
 
-LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::io::ParticleRecord> particles,
-                                           std::span<const mpm::io::PorePressureRecord> rows,
+LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::ParticleRecord> particles,
+                                           std::span<const mpm::PorePressureRecord> rows,
                                            std::span<const double> shear_strain, const LiquefiedOptions& o) {
   using Rule = LiquefiedOptions::Rule;
   LiquefiedSummary out;
@@ -254,7 +254,7 @@ LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::
     if (!(rows[k].ru > o.threshold)) continue;
     ++out.liquefied;
     if (o.rule != Rule::Ratio && o.rule != Rule::Penetration) continue;
-    const mpm::io::ParticleRecord& r = particles[k];
+    const mpm::ParticleRecord& r = particles[k];
     const MpmMaterial& fem = state.materials[r.material_id];
     double ratio = o.ratio;
     if (o.rule == Rule::Penetration) {
@@ -287,7 +287,7 @@ LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::
   }
   for (std::size_t k = 0; k < particles.size(); ++k) {
     if (!(rows[k].ru > o.threshold) || o.rule == Rule::None) continue;
-    const mpm::io::ParticleRecord& r = particles[k];
+    const mpm::ParticleRecord& r = particles[k];
     const unsigned src = r.material_id;
     const double sv0 = rows[k].sigma_v0;
     Key key;
@@ -345,7 +345,7 @@ LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::
   }
   for (std::size_t k = 0; k < particles.size(); ++k) {
     if (!key_of[k]) continue;
-    mpm::io::ParticleRecord& r = particles[k];
+    mpm::ParticleRecord& r = particles[k];
     const MpmMaterial& m = state.materials[id_of.at(*key_of[k])];
     r.material_id = m.id;
     const Stress6 s{r.stress_xx, r.stress_yy, r.stress_zz, r.tau_xy, r.tau_yz, r.tau_xz};
@@ -367,7 +367,7 @@ std::vector<std::size_t> group_by_material(ParticleList& particles) {
   });
   ParticleList sorted(particles.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
-    std::memcpy(static_cast<void*>(&sorted[k]), &particles[order[k]], sizeof(mpm::io::ParticleRecord));  // padding too
+    std::memcpy(static_cast<void*>(&sorted[k]), &particles[order[k]], sizeof(mpm::ParticleRecord));  // padding too
     sorted[k].id = static_cast<std::int64_t>(k);
   }
   particles = std::move(sorted);

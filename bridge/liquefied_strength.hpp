@@ -108,8 +108,8 @@ struct LiquefiedSummary {
 /// Mohr-Coulomb state variables of their (total) stress, pdstrain = shear_strain (empty: 0) and the cohesion
 /// softened to it. Throws common::InputError naming the option or table file (a particle above the table's
 /// last bin, a material without (N1)60cs).
-LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::io::ParticleRecord> particles,
-                                           std::span<const mpm::io::PorePressureRecord> rows,
+LiquefiedSummary assign_liquefied_strength(TransferState& state, std::span<mpm::ParticleRecord> particles,
+                                           std::span<const mpm::PorePressureRecord> rows,
                                            std::span<const double> shear_strain, const LiquefiedOptions& options);
 
 /// Orders the particles by material (stable: within a material in their previous order) and renumbers their

@@ -41,7 +41,7 @@ void append_integer(std::string& out, long v) {
 }
 
 /// A particle coordinate file (CB-Geo's Ascii2D generator file): the count, then x and y per line.
-std::string coordinate_file(std::span<const mpm::io::ParticleRecord> particles) {
+std::string coordinate_file(std::span<const mpm::ParticleRecord> particles) {
   std::string out;
   out.reserve(particles.size() * 40 + 16);
   append_integer(out, static_cast<long>(particles.size()));
@@ -90,7 +90,7 @@ ordered_json material_json(const MpmMaterial& m) {
 
 }  // namespace
 
-GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+GridSpec choose_grid(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                      const DeckOptions& options, std::vector<std::string>* warnings) {
   GridSpec g;
   g.gimp = options.gimp;
@@ -194,7 +194,7 @@ void check_deck_options(const DeckOptions& options) {
   }
 }
 
-DeckText plan_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+DeckText plan_deck(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                    const DeckOptions& options) {
   check_deck_options(options);
   DeckText d;
@@ -243,7 +243,7 @@ DeckText plan_deck(const TransferState& state, std::span<const mpm::io::Particle
   return d;
 }
 
-void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+void format_deck(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                  const DeckOptions& options, DeckText& d) {
   const GridSpec& g = d.grid;
   // mesh.txt: nnodes ncells, node coordinates, cells (CB-Geo Ascii2D).
@@ -397,7 +397,7 @@ void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRe
 
 }
 
-DeckText build_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+DeckText build_deck(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                     const DeckOptions& options) {
   DeckText d = plan_deck(state, particles, options);
   format_deck(state, particles, options, d);

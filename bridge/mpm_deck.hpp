@@ -100,7 +100,7 @@ struct DeckText {
 
 /// Chooses the grid for options that passed check_deck_options (throws common::InputError naming the
 /// option when a particle lies outside the requested extent or the grid is too large).
-GridSpec choose_grid(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+GridSpec choose_grid(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                      const DeckOptions& options, std::vector<std::string>* warnings = nullptr);
 
 /// The checks that need the options alone (dt or the Courant number, steps or duration, output steps,
@@ -111,15 +111,15 @@ void check_deck_options(const DeckOptions& options);
 
 /// Checks the options and chooses the grid, dt, nsteps, output interval and particle file name
 /// (everything but the text bodies). Throws common::InputError naming the option.
-DeckText plan_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+DeckText plan_deck(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                    const DeckOptions& options);
 
 /// Fills the text bodies of a deck planned by plan_deck (no checks left to fail).
-void format_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+void format_deck(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                  const DeckOptions& options, DeckText& deck);
 
 /// plan_deck then format_deck.
-DeckText build_deck(const TransferState& state, std::span<const mpm::io::ParticleRecord> particles,
+DeckText build_deck(const TransferState& state, std::span<const mpm::ParticleRecord> particles,
                     const DeckOptions& options);
 
 }  // namespace bridge

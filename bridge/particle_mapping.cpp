@@ -88,7 +88,7 @@ ParticleList generate_particles(const TransferState& state,
       const ParticlePoint& pt = points[q];
       const auto& N = pt.shape;
       // Value-initialisation zeroes the whole record, padding included (byte-reproducible files).
-      mpm::io::ParticleRecord& r = *::new (static_cast<void*>(&out[first + q])) mpm::io::ParticleRecord{};
+      mpm::ParticleRecord& r = *::new (static_cast<void*>(&out[first + q])) mpm::ParticleRecord{};
       r.id = static_cast<std::int64_t>(first + q);
       double volume = 0, ref_volume = 0;
       if (options.volume_split == VolumeSplit::Jacobian) {

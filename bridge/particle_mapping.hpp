@@ -34,7 +34,7 @@ struct UninitializedAllocator : std::allocator<T> {
 };
 
 /// The particles, in id order (contiguous: pass as std::span to mpm::io::write_particle_table).
-using ParticleList = std::vector<mpm::io::ParticleRecord, UninitializedAllocator<mpm::io::ParticleRecord>>;
+using ParticleList = std::vector<mpm::ParticleRecord, UninitializedAllocator<mpm::ParticleRecord>>;
 
 enum class VolumeSplit { Jacobian, Area };
 

@@ -157,9 +157,9 @@ ParticlePorePressure particle_pore_pressure(const TransferState& state, const Ma
   return out;
 }
 
-void apply_total_stress(std::span<mpm::io::ParticleRecord> particles, std::span<const mpm::io::PorePressureRecord> rows) {
+void apply_total_stress(std::span<mpm::ParticleRecord> particles, std::span<const mpm::PorePressureRecord> rows) {
   for (std::size_t k = 0; k < particles.size(); ++k) {
-    mpm::io::ParticleRecord& r = particles[k];
+    mpm::ParticleRecord& r = particles[k];
     const double p = rows[k].pressure;
     r.stress_xx -= p;
     r.stress_yy -= p;

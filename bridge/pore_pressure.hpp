@@ -60,7 +60,7 @@ std::vector<double> equivalent_shear_strain(std::span<const double> now, std::sp
 
 /// What every particle carries of the pore pressure.
 struct ParticlePorePressure {
-  std::vector<mpm::io::PorePressureRecord> rows;  ///< one per particle, in generate_particles' (id) order
+  std::vector<mpm::PorePressureRecord> rows;  ///< one per particle, in generate_particles' (id) order
   std::vector<double> shear_strain;               ///< per particle; empty without --strain
   std::size_t no_reference = 0;                   ///< particles with sigma'v0 <= 0 (r_u set to 0 there)
 };
@@ -71,6 +71,6 @@ ParticlePorePressure particle_pore_pressure(const TransferState& state, const Ma
 
 /// sigma = sigma' - p I on every particle (CB-Geo: tension positive); a Mohr-Coulomb particle's epsilon
 /// (sqrt(3) x mean stress) follows.
-void apply_total_stress(std::span<mpm::io::ParticleRecord> particles, std::span<const mpm::io::PorePressureRecord> rows);
+void apply_total_stress(std::span<mpm::ParticleRecord> particles, std::span<const mpm::PorePressureRecord> rows);
 
 }  // namespace bridge

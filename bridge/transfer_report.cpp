@@ -44,7 +44,7 @@ void check_finite(const TransferReport& r, double gravity) {
 }  // namespace
 
 TransferReport make_report(const TransferState& state, const std::vector<Stress6>& nodal_stress,
-                           std::span<const mpm::io::ParticleRecord> particles) {
+                           std::span<const mpm::ParticleRecord> particles) {
   TransferReport rep;
   const double g = state.gravity;
   // FEM side: row-sum lumped nodal masses m_a = sum_e rho_e int N_a dA_ref (2x2 Gauss, exact for

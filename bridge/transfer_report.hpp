@@ -34,6 +34,6 @@ struct TransferReport {
 /// particles' field (sum_a N_a sigma_a) at the same point, |s| = sqrt(s:s) with the full tensor.
 /// Throws common::InputError when a figure is not finite (values too large for double precision).
 TransferReport make_report(const TransferState& state, const std::vector<Stress6>& nodal_stress,
-                           std::span<const mpm::io::ParticleRecord> particles);
+                           std::span<const mpm::ParticleRecord> particles);
 
 }  // namespace bridge

@@ -21,7 +21,7 @@
 namespace {
 
 int run(const std::string& working_dir, const std::string& input_file, int threads) {
-  const mpm::io::Deck deck = mpm::io::read_deck(working_dir, input_file);
+  const mpm::Deck deck = mpm::io::read_deck(working_dir, input_file);
   for (const auto& w : deck.warnings) std::fprintf(stderr, "mpm: warning: %s\n", w.c_str());
   mpm::core::Simulation sim(deck, threads);
   mpm::io::ResultsWriter results(deck);
@@ -57,7 +57,7 @@ int run(const std::string& working_dir, const std::string& input_file, int threa
       if (step % every == 0) {
         const auto state = sim.snapshot();
         results.write_output(step, sim.time(), sim.dt(), state,
-                             deck.output.writes_particles(step) ? sim.file_extras() : mpm::io::ParticleFileExtras{});
+                             deck.output.writes_particles(step) ? sim.file_extras() : mpm::ParticleFileExtras{});
         say(energy.check(sim.time(), state));
       }
       if (!removal_said && sim.particle_count() < particles_at_start) {

@@ -58,12 +58,12 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-const char* scheme_name(mpm::io::Scheme s) {
-  return s == mpm::io::Scheme::USL ? "USL" : (s == mpm::io::Scheme::MUSL ? "MUSL" : "USF");
+const char* scheme_name(mpm::Scheme s) {
+  return s == mpm::Scheme::USL ? "USL" : (s == mpm::Scheme::MUSL ? "MUSL" : "USF");
 }
 
 /// The paper's column (see the file comment) at cell size h and ppd x ppd particles per cell.
-Deck paper_column(double h, int ppd, mpm::io::Scheme scheme) {
+Deck paper_column(double h, int ppd, mpm::Scheme scheme) {
   Deck deck;
   deck.grid = make_grid(0, 0, h, static_cast<int>(std::lround(150 / h)), static_cast<int>(std::lround(45 / h)),
                         CellType::Gimp16);
@@ -85,7 +85,7 @@ Deck paper_column(double h, int ppd, mpm::io::Scheme scheme) {
   return deck;
 }
 
-double runout_p98(const std::vector<mpm::io::ParticleRecord>& ps) {
+double runout_p98(const std::vector<mpm::ParticleRecord>& ps) {
   std::vector<double> x;
   for (const auto& p : ps) x.push_back(p.coord_x);
   std::sort(x.begin(), x.end());
@@ -108,12 +108,12 @@ void throughput(bool quick, int steps_arg = 0, int repeats_arg = 0) {
               "APIC ==\n");
   const int steps = steps_arg > 0 ? steps_arg : (quick ? 50 : 200);
   const int repeats = repeats_arg > 0 ? repeats_arg : (quick ? 3 : 5);
-  for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+  for (auto scheme : {mpm::Scheme::USF, mpm::Scheme::USL, mpm::Scheme::MUSL}) {
     for (int threads : {1, 2}) {
       // FLIP and APIC advance side by side, their timed blocks alternating, so both see the same load.
       Deck deck = paper_column(1.0, 4, scheme);
       mpm::core::Simulation flip(deck, threads);
-      deck.analysis.transfer = mpm::io::Transfer::APIC;
+      deck.analysis.transfer = mpm::Transfer::APIC;
       mpm::core::Simulation apic(deck, threads);
       for (int i = 0; i < 20; ++i) {  // warm-up (the column starts to move)
         flip.step();
@@ -148,7 +148,7 @@ void scaling(int repeats) {
               "2T / 1T", "ns/p-step");
   double ns_first = 0;
   for (double h : {2.0, 1.0, 0.5, 0.25, 0.125}) {
-    const Deck deck = paper_column(h, 4, mpm::io::Scheme::USF);
+    const Deck deck = paper_column(h, 4, mpm::Scheme::USF);
     const int steps = std::max(2, static_cast<int>(4.0e6 / static_cast<double>(deck.particles.size())));
     double rate[2] = {0, 0};
     for (int threads : {1, 2}) {
@@ -167,7 +167,7 @@ void scaling(int repeats) {
 }
 
 /// `steps` steps of the column under one configuration, nothing else timed (for perf).
-void profile(mpm::io::Scheme scheme, mpm::io::Transfer transfer, int steps, int threads) {
+void profile(mpm::Scheme scheme, mpm::Transfer transfer, int steps, int threads) {
   Deck deck = paper_column(1.0, 4, scheme);
   deck.analysis.transfer = transfer;
   mpm::core::Simulation sim(deck, threads);
@@ -175,7 +175,7 @@ void profile(mpm::io::Scheme scheme, mpm::io::Transfer transfer, int steps, int 
   for (int i = 0; i < steps; ++i) sim.step();
   const double s = std::chrono::duration<double>(Clock::now() - t0).count();
   std::printf("%s %s, %d threads: %d steps of %zu particles, %.3f s, %.2f M particle-steps/s\n", scheme_name(scheme),
-              transfer == mpm::io::Transfer::APIC ? "APIC" : "FLIP", threads, steps, sim.particle_count(), s,
+              transfer == mpm::Transfer::APIC ? "APIC" : "FLIP", threads, steps, sim.particle_count(), s,
               static_cast<double>(sim.particle_count()) * steps / s / 1e6);
 }
 
@@ -206,15 +206,15 @@ void checksum(int steps) {
     int threads;
     bool stencil_runs;
   };
-  for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL})
-    for (auto transfer : {mpm::io::Transfer::FLIP, mpm::io::Transfer::APIC})
+  for (auto scheme : {mpm::Scheme::USF, mpm::Scheme::USL, mpm::Scheme::MUSL})
+    for (auto transfer : {mpm::Transfer::FLIP, mpm::Transfer::APIC})
       for (const Execution e : {Execution{1, true}, Execution{2, true}, Execution{1, false}}) {
         Deck deck = paper_column(1.0, 4, scheme);
         deck.analysis.transfer = transfer;
         mpm::core::Simulation sim(deck, e.threads, mpm::core::ExecutionOptions{e.stencil_runs});
         for (int i = 0; i < steps; ++i) sim.step();
         std::printf("%-4s %-4s threads %d%s: %016llx\n", scheme_name(scheme),
-                    transfer == mpm::io::Transfer::APIC ? "APIC" : "FLIP", e.threads,
+                    transfer == mpm::Transfer::APIC ? "APIC" : "FLIP", e.threads,
                     e.stencil_runs ? "" : ", no stencil runs", static_cast<unsigned long long>(state_hash(sim)));
       }
 }
@@ -232,7 +232,7 @@ double bar_period_error(int cells, int ppd, double& seconds) {
   for (auto& p : deck.particles) p.velocity_x = v0 * std::sin(beta * p.coord_x);
   deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double x, double) { return x <= 1e-9; }), 0, 0.0});
   deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double) { return true; }), 1, 0.0});
-  deck.analysis.scheme = mpm::io::Scheme::MUSL;
+  deck.analysis.scheme = mpm::Scheme::MUSL;
   deck.analysis.cfl = 0.2;
   deck.analysis.dt = 1.0;
   mpm::core::Simulation sim(deck, 1);
@@ -264,7 +264,7 @@ void accuracy(bool quick) {
   std::vector<std::pair<double, double>> results;
   for (double h : {2.0, 1.0, 0.5}) {
     if (quick && h < 1.0) continue;
-    const Deck deck = paper_column(h, 4, mpm::io::Scheme::MUSL);
+    const Deck deck = paper_column(h, 4, mpm::Scheme::MUSL);
     mpm::core::Simulation sim(deck, 2);
     const auto t0 = Clock::now();
     while (sim.time() < t_end) sim.step();
@@ -282,7 +282,7 @@ void accuracy(bool quick) {
 }  // namespace
 
 /// The paper's full 20 s runout at CFL 0.5 on 2 threads: stability, runout and time.
-void runout(int threads, mpm::io::Scheme scheme, double pic_blend) {
+void runout(int threads, mpm::Scheme scheme, double pic_blend) {
   std::printf("== Paper column, full 20 s runout (%s, FLIP with PIC blend %g, CFL 0.5, %d threads) ==\n",
               scheme_name(scheme), pic_blend,
               threads);
@@ -326,14 +326,14 @@ int main(int argc, char** argv) {
   if (argc > 1 && std::strcmp(argv[1], "--runout") == 0) {
     const std::string scheme = argc > 3 ? argv[3] : "musl";
     runout(argc > 2 ? std::atoi(argv[2]) : 2,
-           scheme == "usl" ? mpm::io::Scheme::USL : (scheme == "usf" ? mpm::io::Scheme::USF : mpm::io::Scheme::MUSL),
+           scheme == "usl" ? mpm::Scheme::USL : (scheme == "usf" ? mpm::Scheme::USF : mpm::Scheme::MUSL),
            argc > 4 ? std::atof(argv[4]) : 0.0);
     return 0;
   }
   if (argc > 1 && std::strcmp(argv[1], "--profile") == 0) {
     const std::string scheme = argc > 2 ? argv[2] : "usf", transfer = argc > 3 ? argv[3] : "flip";
-    profile(scheme == "usl" ? mpm::io::Scheme::USL : (scheme == "musl" ? mpm::io::Scheme::MUSL : mpm::io::Scheme::USF),
-            transfer == "apic" ? mpm::io::Transfer::APIC : mpm::io::Transfer::FLIP, argc > 4 ? std::atoi(argv[4]) : 200,
+    profile(scheme == "usl" ? mpm::Scheme::USL : (scheme == "musl" ? mpm::Scheme::MUSL : mpm::Scheme::USF),
+            transfer == "apic" ? mpm::Transfer::APIC : mpm::Transfer::FLIP, argc > 4 ? std::atoi(argv[4]) : 200,
             argc > 5 ? std::atoi(argv[5]) : 1);
     return 0;
   }

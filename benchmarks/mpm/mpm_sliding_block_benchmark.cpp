@@ -30,29 +30,29 @@ namespace {
 
 using namespace mpm_test;
 
-const char* scheme_name(mpm::io::Scheme s) {
-  return s == mpm::io::Scheme::USF ? "USF" : (s == mpm::io::Scheme::USL ? "USL" : "MUSL");
+const char* scheme_name(mpm::Scheme s) {
+  return s == mpm::Scheme::USF ? "USF" : (s == mpm::Scheme::USL ? "USL" : "MUSL");
 }
 
 }  // namespace
 
 struct Transfer {
   const char* name;
-  mpm::io::Transfer kind;
+  mpm::Transfer kind;
   double blend;
 };
-constexpr Transfer kTransfers[] = {{"FLIP", mpm::io::Transfer::FLIP, 0.0},
-                                   {"PIC", mpm::io::Transfer::PIC, 0.0},
-                                   {"blend0.2", mpm::io::Transfer::FLIP, 0.2},
-                                   {"APIC", mpm::io::Transfer::APIC, 0.0}};
+constexpr Transfer kTransfers[] = {{"FLIP", mpm::Transfer::FLIP, 0.0},
+                                   {"PIC", mpm::Transfer::PIC, 0.0},
+                                   {"blend0.2", mpm::Transfer::FLIP, 0.2},
+                                   {"APIC", mpm::Transfer::APIC, 0.0}};
 
 /// Runs the block to t_end; the mean motion, or a failure message.
-MeanMotion run(SlidingBlockSpec spec, mpm::io::Scheme scheme, const Transfer& tr, double cfl, double t_end,
+MeanMotion run(SlidingBlockSpec spec, mpm::Scheme scheme, const Transfer& tr, double cfl, double t_end,
                std::string& failure) {
   Deck deck = sliding_block(spec);
   deck.analysis.scheme = scheme;
   deck.analysis.transfer = tr.kind;
-  deck.analysis.velocity_update = tr.kind == mpm::io::Transfer::PIC;
+  deck.analysis.velocity_update = tr.kind == mpm::Transfer::PIC;
   deck.analysis.pic_blend = tr.blend;
   deck.analysis.cfl = cfl;
   deck.analysis.dt = 1.0;
@@ -94,7 +94,7 @@ int flutter_table(double E, double lag_slip, double lag_speed) {
         const double a = coulomb(spec), t_end = 2.0;
         spec.cells_x = static_cast<int>(std::ceil((spec.x0 + spec.width + 0.5 * a * t_end * t_end + 2.0) / spec.h));
         std::string failure;
-        const MeanMotion m = run(spec, mpm::io::Scheme::MUSL, tr, 0.4, t_end, failure);
+        const MeanMotion m = run(spec, mpm::Scheme::MUSL, tr, 0.4, t_end, failure);
         const double d = 0.5 * a * m.t * m.t, v = a * m.t;
         const bool ok = failure.empty() && std::abs(m.ux - d) <= 0.03 * d && std::abs(m.vx - v) <= 0.03 * v;
         std::printf(" %s  ", ok ? "+" : (failure.empty() ? "-" : "X"));
@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
   std::printf("%-6s %-5s %-10s %10s %8s %10s %8s %8s\n", "cells", "scheme", "transfer", "d (m)", "d err%",
               "v (m/s)", "v err%", "wall s");
   for (auto type : {CellType::Linear4, CellType::Gimp16}) {
-    for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+    for (auto scheme : {mpm::Scheme::USF, mpm::Scheme::USL, mpm::Scheme::MUSL}) {
       for (const Transfer& tr : kTransfers) {
         const std::string label = std::string(type == CellType::Linear4 ? "ED2Q4/" : "ED2Q16G/") +
                                   scheme_name(scheme) + "/" + tr.name;

@@ -6,13 +6,13 @@
 #include <optional>
 
 #include "mpm/core/nodal_constraints.hpp"
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::core {
 
 struct BodyForce {
   Vec2 gravity = Vec2::Zero();
-  std::optional<io::BaseAcceleration> base;
+  std::optional<BaseAcceleration> base;
   /// b at time t (s): an explicit step from t_n uses b(t_n).
   Vec2 at(double t) const {
     Vec2 b = gravity;

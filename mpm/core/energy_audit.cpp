@@ -13,7 +13,7 @@ namespace {
 std::string num(double v) { return common::number_text(v, 4); }
 
 /// What does work on the body from outside, or "" when nothing does.
-std::string external_work(const io::Deck& deck) {
+std::string external_work(const Deck& deck) {
   if (!deck.nodal_forces.empty()) return "nodal forces";
   if (!deck.particle_tractions.empty()) return "particle tractions";
   if (deck.base_acceleration) return "a base acceleration";
@@ -23,18 +23,18 @@ std::string external_work(const io::Deck& deck) {
 }
 }  // namespace
 
-EnergyAudit::EnergyAudit(const io::Deck& deck)
+EnergyAudit::EnergyAudit(const Deck& deck)
     : reason_(external_work(deck)), gravity_(deck.analysis.gravity), materials_(deck.materials) {
   const double g = gravity_.norm();
   if (g > 0) {  // the grid's lowest corner along g: the largest g . x over the corners
-    const io::Grid& grid = deck.grid;
+    const Grid& grid = deck.grid;
     lowest_ = std::numeric_limits<double>::infinity();
     for (const double x : {grid.xmin, grid.xmax})
       for (const double y : {grid.ymin, grid.ymax}) lowest_ = std::min(lowest_, -(gravity_.x() * x + gravity_.y() * y) / g);
   }
 }
 
-MechanicalEnergy EnergyAudit::measure(std::span<const io::ParticleRecord> particles) const {
+MechanicalEnergy EnergyAudit::measure(std::span<const ParticleRecord> particles) const {
   MechanicalEnergy e;
   const double g = gravity_.norm();
   for (const auto& p : particles) {
@@ -51,7 +51,7 @@ MechanicalEnergy EnergyAudit::measure(std::span<const io::ParticleRecord> partic
   return e;
 }
 
-std::string EnergyAudit::check(double time, std::span<const io::ParticleRecord> particles) {
+std::string EnergyAudit::check(double time, std::span<const ParticleRecord> particles) {
   if (!active()) return "";
   const double energy = measure(particles).total();
   if (!started_) {

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
-#include "mpm/io/particle_table.hpp"
+#include "mpm/problem/deck.hpp"
+#include "mpm/problem/particle_record.hpp"
 
 namespace mpm::core {
 
@@ -33,22 +33,22 @@ class EnergyAudit {
   static constexpr double kWarningGrowth = 0.10;
   static constexpr double kGrowthLimit = 0.25;
 
-  explicit EnergyAudit(const io::Deck& deck);
+  explicit EnergyAudit(const Deck& deck);
   bool active() const { return reason_.empty(); }
   /// Why the run is not audited ("" when it is).
   const std::string& reason() const { return reason_; }
 
-  MechanicalEnergy measure(std::span<const io::ParticleRecord> particles) const;
+  MechanicalEnergy measure(std::span<const ParticleRecord> particles) const;
   /// Records the start state (the first call) or checks a later one: returns a warning the first time
   /// the energy has grown beyond kWarningGrowth (else ""); throws common::NumericalError naming the
   /// growth, the time and what to change beyond kGrowthLimit.
-  std::string check(double time, std::span<const io::ParticleRecord> particles);
+  std::string check(double time, std::span<const ParticleRecord> particles);
 
  private:
   std::string reason_;
   Eigen::Vector2d gravity_;
   double lowest_ = 0;  ///< -g . x / |g| of the grid's lowest corner along g (the height datum), m
-  std::vector<io::MaterialSpec> materials_;
+  std::vector<MaterialSpec> materials_;
   bool started_ = false, warned_ = false;
   double start_time_ = 0, start_ = 0;  ///< time and E of the start state
 };

@@ -46,8 +46,8 @@ void ParticleArrays::resize(std::size_t n) {
 // Construction
 // ---------------------------------------------------------------------------------------------------
 
-Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : grid_(deck.grid) {
-  const io::Analysis& an = deck.analysis;
+Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(deck.grid) {
+  const Analysis& an = deck.analysis;
   nx_ = grid_.nodes_x;
   ny_ = grid_.nodes_y;
   if (nx_ < 2 || ny_ < 2 || !(grid_.hx > 0) || !(grid_.hy > 0))
@@ -57,7 +57,7 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
   inv_hx_ = 1.0 / grid_.hx;
   inv_hy_ = 1.0 / grid_.hy;
   nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
-  const bool gimp = grid_.cell_type == io::CellType::Gimp16;
+  const bool gimp = grid_.cell_type == CellType::Gimp16;
   gimp_margin_ = gimp ? 1.0 : 0.0;
   // cell_keys computes in 32 bits: the largest key is below 4 x cells.
   keys_fit_int32_ = 4.0 * cells_x_ * cells_y_ <= std::numeric_limits<std::int32_t>::max();
@@ -110,7 +110,7 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
   // velocity: USL's strain increment, APIC's C_p): a fraction of a full node of the lightest material.
   double lightest = std::numeric_limits<double>::infinity();
   for (const auto& spec : deck.materials) lightest = std::min(lightest, spec.density);
-  const bool reads_updated_gradients = !gimp && (scheme_ == io::Scheme::USL || transfer_.affine());
+  const bool reads_updated_gradients = !gimp && (scheme_ == Scheme::USL || transfer_.affine());
   small_mass_ = reads_updated_gradients ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
   // CB-Geo's absolute 1e-15, but never more than 1e-15 of a full node of the lightest material: a deck whose
   // densities are tiny numbers (other mass units) must not find every node empty and its body frozen.
@@ -175,7 +175,7 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
   }
   std::vector<std::uint32_t> per_cell(static_cast<std::size_t>(cells_x_) * cells_y_, 0);
   for (std::size_t p = 0; p < n; ++p) {
-    const io::ParticleRecord& r = deck.particles[p];
+    const ParticleRecord& r = deck.particles[p];
     const std::string who = "particle " + std::to_string(r.id);
     if (!std::isfinite(r.coord_x) || !std::isfinite(r.coord_y) || r.coord_x < grid_.xmin || r.coord_x > grid_.xmax ||
         r.coord_y < grid_.ymin || r.coord_y > grid_.ymax)
@@ -195,7 +195,7 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
     ++per_cell[static_cast<std::size_t>(cell_of(cur_.key[p]))];
   }
   for (std::size_t p = 0; p < n; ++p) {
-    const io::ParticleRecord& r = deck.particles[p];
+    const ParticleRecord& r = deck.particles[p];
     const Material& mat = materials_[cur_.material[p]];
     // CB-Geo defaults: volume = cell area / particles in the cell, mass = density * volume,
     // nsize = 2 / sqrt(particles in the cell) (2 / particles per direction). Each applies on its own
@@ -225,7 +225,7 @@ Engine::Engine(const io::Deck& deck, int threads, ExecutionOptions options) : gr
     double* sv = &cur_.svars[p * kStateVariables];
     if (mat.state_count > 0 && r.nstate_vars == mat.state_count) {
       for (std::size_t i = 0; i < mat.state_count; ++i) sv[i] = r.svars[i];
-    } else if (mat.type == io::MaterialType::MohrCoulomb2D) {
+    } else if (mat.type == MaterialType::MohrCoulomb2D) {
       mat.mohr_coulomb.initial_state(sv);
     }
   }
@@ -275,7 +275,7 @@ std::int64_t Engine::cell_key(double x, double y) const {
   i = std::clamp(i, 0, cells_x_ - 1);
   j = std::clamp(j, 0, cells_y_ - 1);
   const std::int64_t cell = static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_x_;
-  if (grid_.cell_type != io::CellType::Gimp16) return 4 * cell;
+  if (grid_.cell_type != CellType::Gimp16) return 4 * cell;
   // uGIMP: the upper half of the cell on an axis has the next node as its nearest (GimpShape::nearest_node).
   const int qx = GimpShape::nearest_node(sx) > i ? 1 : 0, qy = GimpShape::nearest_node(sy) > j ? 1 : 0;
   return 4 * cell + qx + 2 * qy;
@@ -423,7 +423,7 @@ void Engine::step() {
   loads_.set_time(time());
   find_wall_contacts();
   merge_.start(chunks_, threads_);  // g2p_chunk records each chunk's kept particles and movers
-  const bool gimp = grid_.cell_type == io::CellType::Gimp16;
+  const bool gimp = grid_.cell_type == CellType::Gimp16;
 #pragma omp parallel num_threads(threads_)
   {
     if (gimp)
@@ -446,20 +446,20 @@ void Engine::step() {
 template <class Shape>
 void Engine::run_step() {
   switch (scheme_) {
-    case io::Scheme::USF:  // update stress first: strain rate from the velocity of the mapped momentum
+    case Scheme::USF:  // update stress first: strain rate from the velocity of the mapped momentum
       p2g<Shape>(kMassMomentum);
       nodal_velocity(kMassMomentum);
       update_stress<Shape>(StrainFrom::NodalVelocity, AfterStress::MapForces);  // and p2g of the forces from it
       update_grid(kForces);
       g2p<Shape>(G2pAlso::Nothing);
       break;
-    case io::Scheme::USL:  // update stress last: strain rate from the updated grid velocity
+    case Scheme::USL:  // update stress last: strain rate from the updated grid velocity
       p2g<Shape>(kAllFields);
       update_grid(kAllFields);
       g2p<Shape>(G2pAlso::StrainIncrements);
       update_stress<Shape>(StrainFrom::G2p, AfterStress::Nothing);
       break;
-    case io::Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
+    case Scheme::MUSL:  // modified USL: strain rate from the remapped particle momentum
       p2g<Shape>(kAllFields);
       update_grid(kAllFields);
       g2p<Shape>(G2pAlso::RemapMomentum);
@@ -694,7 +694,7 @@ struct MixedMaterials {
   const std::vector<Material>& materials;
   void operator()(std::uint32_t material, double* s, const double* de, double* sv) const {
     const Material& m = materials[material];
-    if (m.type == io::MaterialType::MohrCoulomb2D)
+    if (m.type == MaterialType::MohrCoulomb2D)
       m.mohr_coulomb.update(s, de, sv);
     else
       m.elastic.update(s, de, sv);
@@ -704,7 +704,7 @@ struct MixedMaterials {
   }
   bool separated(std::uint32_t material, double mass, double volume) const {
     const Material& m = materials[material];
-    return m.type == io::MaterialType::MohrCoulomb2D && m.mohr_coulomb.separated(mass, volume);
+    return m.type == MaterialType::MohrCoulomb2D && m.mohr_coulomb.separated(mass, volume);
   }
 };
 }  // namespace
@@ -847,7 +847,7 @@ void Engine::update_material_state(std::size_t c) {
   const std::size_t k0 = chunk_[c], k1 = chunk_[c + 1];
   if (uniform_material_) {
     const Material& m = materials_[0];
-    if (m.type == io::MaterialType::MohrCoulomb2D)
+    if (m.type == MaterialType::MohrCoulomb2D)
       update_material_state(k0, k1, c, SameMaterial<MohrCoulomb>{m.mohr_coulomb});
     else
       update_material_state(k0, k1, c, SameMaterial<LinearElastic>{m.elastic});
@@ -937,9 +937,9 @@ std::vector<std::array<double, 4>> Engine::affine_snapshot() const {
   return out;
 }
 
-std::optional<std::vector<io::FrictionMemoryRecord>> Engine::friction_memory_snapshot() const {
+std::optional<std::vector<FrictionMemoryRecord>> Engine::friction_memory_snapshot() const {
   if (!lagged_friction_) return std::nullopt;
-  std::vector<io::FrictionMemoryRecord> out;
+  std::vector<FrictionMemoryRecord> out;
   for (std::size_t n = 0; n < nodes_; ++n)
     if (const std::int32_t c = constraint_of_[n]; c >= 0)
       if (const NormalMemory& m = normal_memory_[static_cast<std::size_t>(c)]; m.force >= 0.0)
@@ -947,9 +947,9 @@ std::optional<std::vector<io::FrictionMemoryRecord>> Engine::friction_memory_sna
   return out;
 }
 
-void Engine::restore_friction_memory(const std::vector<io::FrictionMemoryRecord>& memory) {
+void Engine::restore_friction_memory(const std::vector<FrictionMemoryRecord>& memory) {
   for (std::size_t k = 0; k < memory.size(); ++k) {
-    const io::FrictionMemoryRecord& r = memory[k];
+    const FrictionMemoryRecord& r = memory[k];
     const std::string where = "friction_memory[" + std::to_string(k) + "]";
     const std::int32_t c = r.node >= 0 && static_cast<std::size_t>(r.node) < nodes_ ? constraint_of_[static_cast<std::size_t>(r.node)] : -1;
     if (c < 0 || !constraints_[static_cast<std::size_t>(c)].lag.active())
@@ -960,11 +960,11 @@ void Engine::restore_friction_memory(const std::vector<io::FrictionMemoryRecord>
   }
 }
 
-std::vector<io::ParticleRecord> Engine::snapshot() const {
-  std::vector<io::ParticleRecord> out;
+std::vector<ParticleRecord> Engine::snapshot() const {
+  std::vector<ParticleRecord> out;
   out.reserve(order_.size());
   for (std::uint32_t p : live_by_id()) {  // by id: the indices sorted, not the records
-    io::ParticleRecord r{};
+    ParticleRecord r{};
     const Material& mat = materials_[cur_.material[p]];
     r.id = cur_.id[p];
     r.mass = cur_.mass[p];
@@ -990,7 +990,7 @@ std::vector<io::ParticleRecord> Engine::snapshot() const {
     r.material_id = mat.id;
     r.nstate_vars = static_cast<std::uint32_t>(mat.state_count);
     for (std::size_t i = 0; i < mat.state_count; ++i) r.svars[i] = cur_.svars[p * kStateVariables + i];
-    if (mat.type == io::MaterialType::MohrCoulomb2D) {
+    if (mat.type == MaterialType::MohrCoulomb2D) {
       const double s[4] = {r.stress_xx, r.stress_yy, r.stress_zz, r.tau_xy};
       MohrCoulomb::set_invariants(s, r.svars);
     }

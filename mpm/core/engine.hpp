@@ -27,8 +27,8 @@
 #include "mpm/core/stencil_runs.hpp"
 #include "mpm/core/stress_remedy.hpp"
 #include "mpm/core/velocity_transfer.hpp"
-#include "mpm/io/deck.hpp"
-#include "mpm/io/particle_table.hpp"
+#include "mpm/problem/deck.hpp"
+#include "mpm/problem/particle_record.hpp"
 
 namespace mpm::core {
 
@@ -78,7 +78,7 @@ struct ParticleArrays {
 
 class Engine {
  public:
-  Engine(const io::Deck& deck, int threads, ExecutionOptions options = {});
+  Engine(const Deck& deck, int threads, ExecutionOptions options = {});
   void step();
   long long step_index() const { return step_index_; }
   double dt() const { return dt_; }
@@ -86,11 +86,11 @@ class Engine {
   double courant_number() const { return courant_number_; }
   double time() const { return static_cast<double>(step_index_) * dt_; }
   std::size_t particle_count() const { return order_.size(); }
-  std::vector<io::ParticleRecord> snapshot() const;
+  std::vector<ParticleRecord> snapshot() const;
   /// The APIC matrices in snapshot() order (by id); empty unless the transfer is APIC.
   std::vector<std::array<double, 4>> affine_snapshot() const;
   /// The nodes' lagged friction strengths (nodes holding one, by node); nullopt without a normal_lag.
-  std::optional<std::vector<io::FrictionMemoryRecord>> friction_memory_snapshot() const;
+  std::optional<std::vector<FrictionMemoryRecord>> friction_memory_snapshot() const;
 
   static constexpr std::int64_t kRemoved = -1;
 
@@ -164,7 +164,7 @@ class Engine {
   void throw_first_error() const;
   void set_up_wall_contacts();  ///< contact_nodes_ from the constraints (wall_contact.cpp)
   /// normal_memory_ from a resumed deck's friction_memory; InputError for a node without a lagged friction.
-  void restore_friction_memory(const std::vector<io::FrictionMemoryRecord>& memory);
+  void restore_friction_memory(const std::vector<FrictionMemoryRecord>& memory);
   void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
   NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
@@ -177,7 +177,7 @@ class Engine {
   static std::int64_t cell_of(std::int64_t key) { return key >> 2; }
 
   // grid
-  io::Grid grid_;
+  Grid grid_;
   int nx_ = 0, ny_ = 0;          ///< nodes per axis
   int cells_x_ = 0, cells_y_ = 0;
   double inv_hx_ = 1, inv_hy_ = 1;
@@ -274,7 +274,7 @@ class Engine {
   // materials and analysis
   std::vector<Material> materials_;
   bool uniform_material_ = true;
-  io::Scheme scheme_ = io::Scheme::USF;
+  Scheme scheme_ = Scheme::USF;
   VelocityTransfer transfer_;  ///< FLIP, PIC, blend or APIC (velocity_transfer.hpp)
   bool locate_ = true;
   double courant_number_ = 0;

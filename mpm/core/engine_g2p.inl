@@ -241,7 +241,7 @@ Long4 Engine::cell_keys(Double4 x, Double4 y) const {
   const Int4 i = clamp(__builtin_convertvector(sx, Int4), cells_x_ - 1);  // truncation, as static_cast<int>
   const Int4 j = clamp(__builtin_convertvector(sy, Int4), cells_y_ - 1);
   Int4 key = 4 * (i + j * cells_x_);
-  if (grid_.cell_type == io::CellType::Gimp16) {  // the quadrant, GimpShape::nearest_node(s) > i
+  if (grid_.cell_type == CellType::Gimp16) {  // the quadrant, GimpShape::nearest_node(s) > i
     const Double4 half = splat4(0.5);
     key += (__builtin_convertvector(sx + half, Int4) > i) & 1;
     key += (__builtin_convertvector(sy + half, Int4) > j) & 2;

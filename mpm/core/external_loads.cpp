@@ -8,7 +8,7 @@
 
 namespace mpm::core {
 
-ExternalLoads::ExternalLoads(const io::Deck& deck, std::size_t nodes) {
+ExternalLoads::ExternalLoads(const Deck& deck, std::size_t nodes) {
   for (const auto& f : deck.nodal_forces) nodal_.push_back({f.force, f.function});
   for (const auto& t : deck.particle_tractions) tractions_.push_back({t.traction, t.function});
   if (!nodal_.empty()) {

@@ -1,6 +1,6 @@
 #pragma once
 // The deck's loads besides the body force (CB-Geo external_loading_conditions.concentrated_nodal_forces
-// and .particle_surface_traction; mpm/io/deck.hpp NodalForce, ParticleTraction), on the engine's nodes and
+// and .particle_surface_traction; mpm/problem/deck.hpp NodalForce, ParticleTraction), on the engine's nodes and
 // particles, evaluated once per step at t_n as CB-Geo does (MPMScheme::compute_forces at step * dt):
 // - a concentrated force is added to its node's external force (before Cundall damping, which acts on
 //   the whole unbalanced force);
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "mpm/core/nodal_constraints.hpp"
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::core {
 
@@ -24,7 +24,7 @@ class ExternalLoads {
  public:
   ExternalLoads() = default;
   /// Throws common::InputError naming the entry for a node outside the mesh.
-  ExternalLoads(const io::Deck& deck, std::size_t nodes);
+  ExternalLoads(const Deck& deck, std::size_t nodes);
 
   bool has_nodal_forces() const { return !node_slot_.empty(); }
   bool has_tractions() const { return !traction_slot_of_id_.empty(); }
@@ -54,7 +54,7 @@ class ExternalLoads {
   /// Per entry: its magnitude (force or traction) and math function, the value at the time set.
   struct Scaled {
     double scale;
-    io::MathFunction function;
+    MathFunction function;
   };
   std::vector<Scaled> nodal_, tractions_;
   std::vector<double> nodal_values_, traction_values_;  ///< per entry: scale * f(t)

@@ -8,13 +8,13 @@
 namespace mpm::core {
 
 namespace {
-double bulk_modulus(const io::MaterialSpec& s) { return s.youngs_modulus / (3.0 * (1.0 - 2.0 * s.poisson_ratio)); }
-double shear_modulus(const io::MaterialSpec& s) { return s.youngs_modulus / (2.0 * (1.0 + s.poisson_ratio)); }
+double bulk_modulus(const MaterialSpec& s) { return s.youngs_modulus / (3.0 * (1.0 - 2.0 * s.poisson_ratio)); }
+double shear_modulus(const MaterialSpec& s) { return s.youngs_modulus / (2.0 * (1.0 + s.poisson_ratio)); }
 }  // namespace
 
-LinearElastic LinearElastic::from(const io::MaterialSpec& spec) { return {bulk_modulus(spec), shear_modulus(spec)}; }
+LinearElastic LinearElastic::from(const MaterialSpec& spec) { return {bulk_modulus(spec), shear_modulus(spec)}; }
 
-MohrCoulomb MohrCoulomb::from(const io::MaterialSpec& spec) {
+MohrCoulomb MohrCoulomb::from(const MaterialSpec& spec) {
   MohrCoulomb m;
   m.bulk = bulk_modulus(spec);
   m.shear = shear_modulus(spec);
@@ -116,14 +116,14 @@ void MohrCoulomb::set_invariants(const double* stress, double* svars) {
   svars[5] = constitutive::lode_angle(s);
 }
 
-Material Material::from(const io::MaterialSpec& spec) {
+Material Material::from(const MaterialSpec& spec) {
   Material m;
   m.type = spec.type;
   m.id = spec.id;
   m.density = spec.density;
   const double k = bulk_modulus(spec), g = shear_modulus(spec);
   m.p_wave_modulus = k + 4.0 / 3.0 * g;
-  if (spec.type == io::MaterialType::LinearElastic2D) {
+  if (spec.type == MaterialType::LinearElastic2D) {
     m.elastic = LinearElastic::from(spec);
     m.state_count = LinearElastic::kStateCount;
   } else {

@@ -8,7 +8,7 @@
 
 #include "constitutive/mohr_coulomb.hpp"
 #include "mpm/core/lanes.hpp"
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::core {
 
@@ -21,7 +21,7 @@ inline constexpr std::size_t kStateVariables = 7;
 struct LinearElastic {
   double bulk = 0, shear = 0;
   static constexpr std::size_t kStateCount = 0;
-  static LinearElastic from(const io::MaterialSpec& spec);
+  static LinearElastic from(const MaterialSpec& spec);
   void initial_state(double* /*svars*/) const {}
   /// An elastic solid never separates (see MohrCoulomb::separated).
   static constexpr bool separated(double /*mass*/, double /*volume*/) { return false; }
@@ -60,7 +60,7 @@ struct MohrCoulomb {
   /// strength (phi, psi, c) is the peak or the residual one: the same result bit for bit, less work.
   constitutive::MohrCoulombReturnMap peak_map, residual_map;
   static constexpr std::size_t kStateCount = 7;
-  static MohrCoulomb from(const io::MaterialSpec& spec);
+  static MohrCoulomb from(const MaterialSpec& spec);
   void initial_state(double* svars) const;
   /// The stress update. Inline, the common case: no softening this step and the peak strength (the
   /// elastic trial for most particles, every step, without a call; the peak map's return for the rest);
@@ -131,14 +131,14 @@ struct MohrCoulomb {
 
 /// A material of the deck, resolved: its type, its spec id and its model parameters.
 struct Material {
-  io::MaterialType type = io::MaterialType::LinearElastic2D;
+  MaterialType type = MaterialType::LinearElastic2D;
   unsigned id = 0;
   double density = 0;
   double p_wave_modulus = 0;  ///< K + 4G/3, Pa (for the time-step limit)
   std::size_t state_count = 0;
   LinearElastic elastic;
   MohrCoulomb mohr_coulomb;
-  static Material from(const io::MaterialSpec& spec);
+  static Material from(const MaterialSpec& spec);
 };
 
 }  // namespace mpm::core

@@ -1,5 +1,5 @@
 #pragma once
-// The explicit MPM engine: one Simulation per run, built from a validated io::Deck.
+// The explicit MPM engine: one Simulation per run, built from a validated Deck.
 //
 // A step reads as the algorithm (Sulsky, Chen & Schreyer 1994; Bardenhagen & Kober 2004 for uGIMP;
 // USF/USL/MUSL as in CB-Geo's include/solvers/mpm_scheme/*.tcc):
@@ -36,8 +36,8 @@
 #include <memory>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
-#include "mpm/io/particle_table.hpp"
+#include "mpm/problem/deck.hpp"
+#include "mpm/problem/particle_record.hpp"
 
 namespace mpm::core {
 
@@ -55,7 +55,7 @@ class Simulation {
   /// Builds particles, grid and materials from `deck`. `threads` <= 0: OpenMP's default.
   /// Applies CB-Geo's defaults to particles with volume <= 0 (volume = cell area / particles in the
   /// cell, mass = density * volume, nsize = 2 / sqrt(particles in the cell)).
-  explicit Simulation(const io::Deck& deck, int threads = 0, ExecutionOptions options = {});
+  explicit Simulation(const Deck& deck, int threads = 0, ExecutionOptions options = {});
   ~Simulation();
   Simulation(Simulation&&) noexcept;
   Simulation& operator=(Simulation&&) noexcept;
@@ -77,15 +77,15 @@ class Simulation {
   double courant_number() const;
   std::size_t particle_count() const;
   /// Full particle state in CB-Geo's record form, sorted by particle id (exact doubles).
-  std::vector<io::ParticleRecord> snapshot() const;
+  std::vector<ParticleRecord> snapshot() const;
   /// The APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s) in snapshot() order; empty unless the
   /// transfer is APIC. Written beside the particle table so that a resumed run continues bit for bit.
   std::vector<std::array<double, 4>> affine_snapshot() const;
   /// The lagged friction strengths (lagged_friction.hpp) by node; nullopt unless a friction constraint
   /// has a normal_lag. Written beside the particle table for the same reason.
-  std::optional<std::vector<io::FrictionMemoryRecord>> friction_memory_snapshot() const;
+  std::optional<std::vector<FrictionMemoryRecord>> friction_memory_snapshot() const;
   /// Both of the above, as a particle file carries them.
-  io::ParticleFileExtras file_extras() const { return {affine_snapshot(), friction_memory_snapshot()}; }
+  ParticleFileExtras file_extras() const { return {affine_snapshot(), friction_memory_snapshot()}; }
 
  private:
   std::unique_ptr<Engine> engine_;

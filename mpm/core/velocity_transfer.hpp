@@ -33,28 +33,28 @@
 #include "mpm/core/lanes.hpp"
 #include "mpm/core/shape_functions.hpp"
 #include "mpm/core/stencil_kernels.hpp"
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::core {
 
 /// The transfer of one run.
 struct VelocityTransfer {
-  io::Transfer kind = io::Transfer::FLIP;
+  Transfer kind = Transfer::FLIP;
   double pic = 0.0;  ///< FLIP blend: PIC weight b (1 for PIC, 0 for pure FLIP); unused by APIC
 
   /// From the analysis block: transfer, velocity_update (true = PIC) and pic_blend. Throws
   /// common::InputError when they contradict each other (a deck built in code; the deck reader
   /// already refuses such JSON) or when pic_blend is outside [0, 1].
-  static VelocityTransfer from(const io::Analysis& analysis);
+  static VelocityTransfer from(const Analysis& analysis);
 
-  bool affine() const { return kind == io::Transfer::APIC; }
+  bool affine() const { return kind == Transfer::APIC; }
 
   /// The velocity component g2p hands back, from the particle's old velocity, the interpolated updated
   /// grid velocity sum w v_i^new and the interpolated grid acceleration sum w a_i; T = double, or
   /// Double4 for the four particles of a stencil run (the same operations per lane).
   template <class T>
   T particle_velocity(T v_old, T v_grid, T a_grid, double dt) const {
-    if (kind == io::Transfer::APIC) return v_grid;
+    if (kind == Transfer::APIC) return v_grid;
     const T flip = v_old + dt * a_grid;
     return pic > 0.0 ? (1.0 - pic) * flip + pic * v_grid : flip;
   }

@@ -18,7 +18,9 @@
 #include "mpm/io/external_loads.hpp"
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
+#include "mpm/io/math_functions.hpp"
 #include "mpm/io/output_keys.hpp"
+#include "mpm/io/particle_table.hpp"
 #include "mpm/io/resume_extras.hpp"
 #include "mpm/io/transfer_keys.hpp"
 

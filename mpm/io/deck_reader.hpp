@@ -1,9 +1,9 @@
 #pragma once
-// Reading a CB-Geo MPM input deck (mpm.json + the files it names) into an io::Deck.
+// Reading a CB-Geo MPM input deck (mpm.json + the files it names) into an Deck.
 #include <filesystem>
 #include <string>
 
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::io {
 

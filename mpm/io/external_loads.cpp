@@ -5,6 +5,7 @@
 #include "mpm/io/ascii_files.hpp"
 #include "mpm/io/deck_rules.hpp"
 #include "mpm/io/json_keys.hpp"
+#include "mpm/io/math_functions.hpp"
 
 namespace mpm::io {
 

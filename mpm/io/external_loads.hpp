@@ -8,7 +8,7 @@
 #include <map>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::io {
 

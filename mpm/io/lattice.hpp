@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mpm/io/ascii_files.hpp"
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::io {
 

@@ -1,7 +1,7 @@
 #pragma once
 // The output keys of a deck's post_processing object that choose VTK files (CB-Geo's "vtk" and
 // "vtk_statevars"), read apart from read_deck so the deck reader does not grow with each format.
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 #include "mpm/io/json_keys.hpp"
 
 namespace mpm::io {

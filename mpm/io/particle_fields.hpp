@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 #include "mpm/io/particle_table.hpp"
 
 namespace mpm::io {

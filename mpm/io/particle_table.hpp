@@ -12,31 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "mpm/problem/particle_record.hpp"
+
 namespace mpm::io {
 
-inline constexpr std::size_t kMaxStateVariables = 20;
-
-/// One particle as CB-Geo stores it. The byte layout matches CB-Geo's struct (cell_id before
-/// status in memory; in the file's member list status comes first). Value-initialise it
-/// (`ParticleRecord r{};`) so padding bytes are zero and files are byte-reproducible.
-struct ParticleRecord {
-  std::int64_t id = 0;
-  double mass = 0, volume = 0, pressure = 0;
-  double coord_x = 0, coord_y = 0, coord_z = 0;
-  double displacement_x = 0, displacement_y = 0, displacement_z = 0;
-  double nsize_x = 0, nsize_y = 0, nsize_z = 0;  ///< GIMP size in natural cell coordinates (2/ppd)
-  double velocity_x = 0, velocity_y = 0, velocity_z = 0;
-  double stress_xx = 0, stress_yy = 0, stress_zz = 0;  ///< Pa; stress_zz is the out-of-plane stress
-  double tau_xy = 0, tau_yz = 0, tau_xz = 0;
-  double strain_xx = 0, strain_yy = 0, strain_zz = 0;
-  double gamma_xy = 0, gamma_yz = 0, gamma_xz = 0;  ///< engineering shear strains
-  double epsilon_v = 0;
-  std::int64_t cell_id = -1;  ///< -1: the reader searches for the cell
-  std::uint8_t status = 1;    ///< 1: active
-  std::uint32_t material_id = 0;
-  std::uint32_t nstate_vars = 0;
-  double svars[kMaxStateVariables] = {};  ///< material state variables in the material's order
-};
 
 /// Number of members in the file's compound type.
 inline constexpr std::size_t kParticleTableMembers = 53;
@@ -77,13 +56,6 @@ std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std:
 /// last updated (kg per m), one row per frictional node that holds a memory.
 inline constexpr const char* kFrictionMemoryDataset = "friction_memory";
 
-/// One row of kFrictionMemoryDataset.
-struct FrictionMemoryRecord {
-  std::int64_t node = 0;
-  double force = 0;  ///< N_s
-  double mass = 0;
-  bool operator==(const FrictionMemoryRecord&) const = default;
-};
 
 /// Writes kFrictionMemoryDataset into the open HDF5 file `file_id`. Throws std::runtime_error naming
 /// `shown` on failure.
@@ -102,13 +74,6 @@ std::optional<std::vector<FrictionMemoryRecord>> read_friction_memory_dataset(co
 /// mpm reads it on resume and writes it into every output file, each particle keeping its transfer-time row.
 inline constexpr const char* kPorePressureDataset = "pore_pressure";
 
-/// One row of kPorePressureDataset.
-struct PorePressureRecord {
-  double pressure = 0;  ///< p, Pa, compression positive
-  double sigma_v0 = 0;  ///< sigma'v0, Pa, compression positive
-  double ru = 0;        ///< r_u, -
-  bool operator==(const PorePressureRecord&) const = default;
-};
 
 /// Writes kPorePressureDataset (rows x 3; zero rows is a dataset too) into the open HDF5 file `file_id`.
 /// Throws std::runtime_error naming `shown` on failure.
@@ -119,13 +84,6 @@ void write_pore_pressure_dataset(std::int64_t file_id, std::span<const PorePress
 std::optional<std::vector<PorePressureRecord>> read_pore_pressure_dataset(const std::filesystem::path& file,
                                                                          std::size_t rows);
 
-/// What a particle file carries beside CB-Geo's "/table" for a bit-for-bit resume: the APIC matrices
-/// (empty unless the transfer is APIC: none written) and the lagged friction strengths (none without a
-/// normal_lag; with one, written even when no node holds a memory).
-struct ParticleFileExtras {
-  std::vector<std::array<double, 4>> affine;
-  std::optional<std::vector<FrictionMemoryRecord>> friction_memory;
-};
 
 /// CB-Geo's output name for `step` of a run of `nsteps` steps: "particles" + step zero-padded to
 /// int(log10(nsteps)) + 1 digits + ".h5" (e.g. step 250 of 1001 -> "particles0250.h5").

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "common/input_error.hpp"
+#include "mpm/io/particle_table.hpp"
 
 namespace mpm::io {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm::io {
 

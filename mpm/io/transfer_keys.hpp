@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 #include "mpm/io/json_keys.hpp"
 
 namespace mpm::io {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 #include "mpm/io/particle_fields.hpp"
 
 namespace mpm::io {

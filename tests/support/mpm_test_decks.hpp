@@ -6,17 +6,17 @@
 #include <vector>
 
 #include "mpm/core/simulation.hpp"
-#include "mpm/io/deck.hpp"
+#include "mpm/problem/deck.hpp"
 
 namespace mpm_test {
 
-using mpm::io::CellType;
-using mpm::io::Deck;
+using mpm::CellType;
+using mpm::Deck;
 
 /// A uniform grid of cells_x x cells_y cells of size h with its lower-left corner at (x0, y0). GIMP
 /// grids get CB-Geo's halo ring: one extra node around the region on every side.
-inline mpm::io::Grid make_grid(double x0, double y0, double h, int cells_x, int cells_y, CellType type) {
-  mpm::io::Grid g;
+inline mpm::Grid make_grid(double x0, double y0, double h, int cells_x, int cells_y, CellType type) {
+  mpm::Grid g;
   const int halo = type == CellType::Gimp16 ? 1 : 0;
   g.x0 = x0 - halo * h;
   g.y0 = y0 - halo * h;
@@ -31,20 +31,20 @@ inline mpm::io::Grid make_grid(double x0, double y0, double h, int cells_x, int 
   return g;
 }
 
-inline mpm::io::MaterialSpec elastic(unsigned id, double rho, double E, double nu) {
-  mpm::io::MaterialSpec m;
+inline mpm::MaterialSpec elastic(unsigned id, double rho, double E, double nu) {
+  mpm::MaterialSpec m;
   m.id = id;
-  m.type = mpm::io::MaterialType::LinearElastic2D;
+  m.type = mpm::MaterialType::LinearElastic2D;
   m.density = rho;
   m.youngs_modulus = E;
   m.poisson_ratio = nu;
   return m;
 }
 
-inline mpm::io::MaterialSpec mohr_coulomb(unsigned id, double rho, double E, double nu, double phi_deg, double c,
+inline mpm::MaterialSpec mohr_coulomb(unsigned id, double rho, double E, double nu, double phi_deg, double c,
                                           double psi_deg) {
-  mpm::io::MaterialSpec m = elastic(id, rho, E, nu);
-  m.type = mpm::io::MaterialType::MohrCoulomb2D;
+  mpm::MaterialSpec m = elastic(id, rho, E, nu);
+  m.type = mpm::MaterialType::MohrCoulomb2D;
   const double d2r = std::acos(-1.0) / 180.0;
   m.friction = m.residual_friction = phi_deg * d2r;
   m.dilation = m.residual_dilation = psi_deg * d2r;
@@ -64,7 +64,7 @@ inline std::int64_t fill_block(Deck& deck, double xa, double xb, double ya, doub
   const int ny = static_cast<int>(std::lround((yb - ya) / h)) * ppd;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
-      mpm::io::ParticleRecord r{};
+      mpm::ParticleRecord r{};
       r.id = id++;
       r.coord_x = xa + (i + 0.5) * h / ppd;
       r.coord_y = ya + (j + 0.5) * h / ppd;
@@ -75,7 +75,7 @@ inline std::int64_t fill_block(Deck& deck, double xa, double xb, double ya, doub
 }
 
 /// Lattice indices of the nodes whose coordinates satisfy `pred`.
-inline std::vector<int> nodes_where(const mpm::io::Grid& g, const std::function<bool(double, double)>& pred) {
+inline std::vector<int> nodes_where(const mpm::Grid& g, const std::function<bool(double, double)>& pred) {
   std::vector<int> out;
   for (int j = 0; j < g.nodes_y; ++j)
     for (int i = 0; i < g.nodes_x; ++i)
@@ -88,7 +88,7 @@ inline std::vector<int> nodes_where(const mpm::io::Grid& g, const std::function<
 /// (g = 9.81 m/s2, also the deck's gravity); a roller wall at x = 0 (and at x = right_wall when > 0);
 /// the base y = 0 fixed in y with Coulomb friction `base_friction` (CB-Geo friction_constraints, sign_n -1).
 /// The caller sets the scheme and the time step.
-inline Deck collapsing_column(const mpm::io::Grid& grid, const mpm::io::MaterialSpec& material, double width,
+inline Deck collapsing_column(const mpm::Grid& grid, const mpm::MaterialSpec& material, double width,
                               double height, int ppd, double base_friction, double right_wall = 0.0) {
   constexpr double g = 9.81;
   Deck deck;
@@ -157,7 +157,7 @@ inline Deck sliding_block(const SlidingBlockSpec& s) {
 struct MeanMotion {
   double ux = 0, vx = 0, vy = 0, t = 0;
 };
-inline MeanMotion mean_motion(const std::vector<mpm::io::ParticleRecord>& ps) {
+inline MeanMotion mean_motion(const std::vector<mpm::ParticleRecord>& ps) {
   MeanMotion r;
   double m = 0;
   for (const auto& p : ps) {
@@ -176,7 +176,7 @@ inline MeanMotion mean_motion(const std::vector<mpm::io::ParticleRecord>& ps) {
 struct Totals {
   double mass = 0, mx = 0, my = 0, px = 0, py = 0, kinetic = 0;
 };
-inline Totals totals(const std::vector<mpm::io::ParticleRecord>& ps) {
+inline Totals totals(const std::vector<mpm::ParticleRecord>& ps) {
   Totals t;
   for (const auto& p : ps) {
     t.mass += p.mass;

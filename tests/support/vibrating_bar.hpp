@@ -19,7 +19,7 @@ struct VibratingBar {
   static double period() { return 2 * std::acos(-1.0) / omega(); }
 
   /// The bar on `cells` cells (2 x 2 particles per cell), CFL 0.2; the caller may change the analysis.
-  static Deck deck(int cells, mpm::io::Scheme scheme, CellType type) {
+  static Deck deck(int cells, mpm::Scheme scheme, CellType type) {
     const double h = kL / cells;
     Deck d;
     d.grid = make_grid(0, 0, h, cells + 2, 1, type);

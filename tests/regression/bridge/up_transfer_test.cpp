@@ -74,8 +74,8 @@ std::string files(const fs::path& d, bool pore_pressure = true) {
 }
 
 struct Transfer {
-  std::vector<mpm::io::ParticleRecord> particles;
-  std::vector<mpm::io::PorePressureRecord> rows;  ///< empty for a dry transfer
+  std::vector<mpm::ParticleRecord> particles;
+  std::vector<mpm::PorePressureRecord> rows;  ///< empty for a dry transfer
   nlohmann::json report;
 };
 
@@ -88,7 +88,7 @@ Transfer transfer(const std::string& args, const fs::path& out, const fs::path& 
   for (const auto& entry : fs::directory_iterator(out / "results/column")) h5 = entry.path();
   if (h5.empty()) return t;
   t.particles = mpm::io::read_particle_table(h5);
-  t.rows = mpm::io::read_pore_pressure_dataset(h5, t.particles.size()).value_or(std::vector<mpm::io::PorePressureRecord>{});
+  t.rows = mpm::io::read_pore_pressure_dataset(h5, t.particles.size()).value_or(std::vector<mpm::PorePressureRecord>{});
   t.report = nlohmann::json::parse(test_support::read_text(out / "report.json"));
   return t;
 }
@@ -197,7 +197,7 @@ TEST(UpTransfer, ADrainedUpRunGivesTheDryTransfersParticles) {
   const Transfer dry = transfer(files(fem, false) + " --time 1.5", fem / "dry", fem);
   ASSERT_EQ(up.particles.size(), 256u);
   ASSERT_EQ(dry.particles.size(), up.particles.size());
-  EXPECT_EQ(std::memcmp(up.particles.data(), dry.particles.data(), up.particles.size() * sizeof(mpm::io::ParticleRecord)), 0);
+  EXPECT_EQ(std::memcmp(up.particles.data(), dry.particles.data(), up.particles.size() * sizeof(mpm::ParticleRecord)), 0);
   ASSERT_EQ(up.rows.size(), up.particles.size());
   for (const auto& row : up.rows) {
     EXPECT_EQ(row.pressure, 0.0);

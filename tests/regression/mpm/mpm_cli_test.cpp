@@ -24,7 +24,7 @@ void expect_identical_tables(const fs::path& a, const fs::path& b) {
   ASSERT_EQ(ra.size(), rb.size()) << a << " vs " << b;
   std::size_t differing = 0;
   for (std::size_t k = 0; k < ra.size(); ++k)
-    if (std::memcmp(&ra[k], &rb[k], sizeof(mpm::io::ParticleRecord)) != 0) ++differing;
+    if (std::memcmp(&ra[k], &rb[k], sizeof(mpm::ParticleRecord)) != 0) ++differing;
   EXPECT_EQ(differing, 0u) << a << " vs " << b;
 }
 
@@ -72,7 +72,7 @@ void check_resume(const std::string& name, const std::string& uuid, long long ns
     EXPECT_EQ(memory_a.has_value(), !normal_lag.is_null()) << fa;
     if (memory_a) {
       EXPECT_FALSE(memory_a->empty()) << fa << ": the column stands on its lagged base";
-      EXPECT_TRUE(*memory_a == mpm::io::read_friction_memory_dataset(fb).value_or(std::vector<mpm::io::FrictionMemoryRecord>{}))
+      EXPECT_TRUE(*memory_a == mpm::io::read_friction_memory_dataset(fb).value_or(std::vector<mpm::FrictionMemoryRecord>{}))
           << fb;
     }
   }

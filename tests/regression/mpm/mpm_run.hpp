@@ -84,7 +84,7 @@ inline RunResult run_mpm(const fs::path& dir, const std::string& input = "mpm.js
 }
 
 /// Reads a gzipped CB-Geo particle file (ref/particlesNNNN.h5.gz) through a scratch copy.
-inline std::vector<mpm::io::ParticleRecord> read_gz_table(const fs::path& gz) {
+inline std::vector<mpm::ParticleRecord> read_gz_table(const fs::path& gz) {
   const fs::path plain = scratch_root() / ("unpacked_" + gz.stem().string());
   fs::create_directories(scratch_root());
   gzFile in = gzopen(gz.c_str(), "rb");
@@ -106,7 +106,7 @@ struct Stats {
   double mass = 0, cx = 0, cy = 0, vx = 0, vy = 0, ke = 0, min_syy = 0, max_syy = 0, p98x = 0, p995y = 0, vmax = 0;
 };
 
-inline Stats stats_of(const std::vector<mpm::io::ParticleRecord>& ps) {
+inline Stats stats_of(const std::vector<mpm::ParticleRecord>& ps) {
   Stats s;
   s.n = ps.size();
   std::vector<double> xs, ys;

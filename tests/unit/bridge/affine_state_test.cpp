@@ -53,7 +53,7 @@ TEST(AffineState, MatricesAreTheGradientTimesApicsInertiaTensor) {
   bridge::GridSpec grid;
   grid.h = 0.5;
   grid.nx = grid.ny = 8;
-  mpm::io::ParticleRecord p{};
+  mpm::ParticleRecord p{};
   p.coord_x = 1.1;   // s = 2.2: 0.2 of a cell from node 2
   p.coord_y = 0.75;  // s = 1.5: mid-cell
   p.nsize_x = p.nsize_y = 0.5;  // 4 x 4 particles per cell: lp = h / 8, l = 1/8

@@ -59,7 +59,7 @@ TEST(GroundMotion, TheDeckShakesOnFromTheTransfer) {
   EXPECT_EQ(f["type"], "Linear");
   EXPECT_EQ(f["id"], base["math_function_id"]);
   // mpm's Linear function at MPM time t reads the record at FEM time t - t0 + 0.12 (t0 = (step + 1) dt).
-  mpm::io::LinearFunction fn{f["xvalues"].get<std::vector<double>>(), f["fxvalues"].get<std::vector<double>>()};
+  mpm::LinearFunction fn{f["xvalues"].get<std::vector<double>>(), f["fxvalues"].get<std::vector<double>>()};
   for (const double t_fem : {0.12, 0.15, 0.2, 0.25, 0.3, 0.31, 1.0}) {
     SCOPED_TRACE(t_fem);
     EXPECT_CLOSE(fn.value(t_fem - 0.12 + 1e-3), o.ground_motion->at(t_fem), 1e-12, 1e-12);

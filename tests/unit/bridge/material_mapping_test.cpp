@@ -144,7 +144,7 @@ TEST_F(MaterialMapping, AFreshStartGivesEachParticleItsOwnMaterial) {
   std::ofstream(deck_dir / "mesh.txt") << d.mesh_txt;
   std::ofstream(deck_dir / "entity_sets.json") << d.entity_sets_json;
   for (const auto& [name, body] : d.particle_files) std::ofstream(deck_dir / name) << body;
-  const mpm::io::Deck fresh = mpm::io::read_deck(deck_dir, "mpm.json");
+  const mpm::Deck fresh = mpm::io::read_deck(deck_dir, "mpm.json");
   ASSERT_EQ(fresh.particles.size(), particles.size());
   std::size_t of_material[2] = {0, 0};
   for (std::size_t k = 0; k < particles.size(); ++k) {

@@ -167,10 +167,10 @@ TEST(MpmDeck, DefaultsAndErrors) {
   // Default dt = 0.1 h / c_p.
   const double nu = 0.3, cp = std::sqrt(50e6 * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * 1800));
   EXPECT_CLOSE(d.dt, 0.1 * d.grid.h / cp, 0, 1e-12);
-  mpm::io::ParticleRecord outside{};
+  mpm::ParticleRecord outside{};
   outside.coord_x = 50;
   o.extent = std::array<double, 4>{0, 30, 0, 10};
-  const std::vector<mpm::io::ParticleRecord> one{outside};
+  const std::vector<mpm::ParticleRecord> one{outside};
   EXPECT_THROW(bridge::build_deck(st, one, o), common::InputError);
   o = {};
   o.scheme = "leapfrog";

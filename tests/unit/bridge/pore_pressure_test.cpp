@@ -272,8 +272,8 @@ bridge::TransferState two_materials() {
 // theirs. With more distinct strengths than --max-liquefied-materials the grid widens until they fit.
 TEST(LiquefiedStrength, RatioRuleGroupsStrengthsAndStartsTheSoftening) {
   bridge::TransferState st = two_materials();
-  std::vector<mpm::io::ParticleRecord> particles(6);
-  std::vector<mpm::io::PorePressureRecord> rows = {{50e3, 10e3, 0.9}, {50e3, 10.1e3, 0.8}, {50e3, 20e3, 0.75},
+  std::vector<mpm::ParticleRecord> particles(6);
+  std::vector<mpm::PorePressureRecord> rows = {{50e3, 10e3, 0.9}, {50e3, 10.1e3, 0.8}, {50e3, 20e3, 0.75},
                                                    {50e3, 30e3, 0.5}, {50e3, 10e3, 0.95}, {50e3, 10e3, 0.7}};
   for (std::size_t k = 0; k < particles.size(); ++k) {
     particles[k].id = static_cast<std::int64_t>(k);
@@ -308,8 +308,8 @@ TEST(LiquefiedStrength, RatioRuleGroupsStrengthsAndStartsTheSoftening) {
 
   // Ten particles of strengths 1 to 512 kPa (ten grid values at 5 %) and at most 4 materials: the grid widens.
   bridge::TransferState wide = two_materials();
-  std::vector<mpm::io::ParticleRecord> many(10);
-  std::vector<mpm::io::PorePressureRecord> many_rows;
+  std::vector<mpm::ParticleRecord> many(10);
+  std::vector<mpm::PorePressureRecord> many_rows;
   for (int k = 0; k < 10; ++k) many_rows.push_back({0, 1e4 * std::pow(2.0, k), 0.9});
   o.max_materials = 4;
   const auto widened = bridge::assign_liquefied_strength(wide, many, many_rows, {}, o);
@@ -325,9 +325,9 @@ TEST(LiquefiedStrength, RatioRuleGroupsStrengthsAndStartsTheSoftening) {
 // without pore pressure keeps phi'.
 TEST(LiquefiedStrength, EffectiveFrictionHoldsThePorePressureOfTheTransfer) {
   bridge::TransferState st = two_materials();
-  std::vector<mpm::io::ParticleRecord> particles(4);
+  std::vector<mpm::ParticleRecord> particles(4);
   // p 50 kPa on a total mean stress of 100 kPa (tan phi halved), 25 of 100 (x 0.75), liquefied, no p
-  const std::vector<mpm::io::PorePressureRecord> rows = {{50e3, 50e3, 0.3}, {25e3, 50e3, 0.1}, {80e3, 20e3, 0.9},
+  const std::vector<mpm::PorePressureRecord> rows = {{50e3, 50e3, 0.3}, {25e3, 50e3, 0.1}, {80e3, 20e3, 0.9},
                                                          {0.0, 50e3, 0.0}};
   for (auto& r : particles) r.stress_xx = r.stress_yy = r.stress_zz = -100e3;
   bridge::LiquefiedOptions o;
@@ -345,7 +345,7 @@ TEST(LiquefiedStrength, EffectiveFrictionHoldsThePorePressureOfTheTransfer) {
   EXPECT_TRUE(has(summary.effective_friction, "tan(phi) = (1 - p / sigma_m) tan(phi')")) << summary.effective_friction;
   // Without the option the particles below the threshold keep phi' on the total stress.
   bridge::TransferState plain = two_materials();
-  std::vector<mpm::io::ParticleRecord> same(4);
+  std::vector<mpm::ParticleRecord> same(4);
   for (auto& r : same) r.stress_xx = r.stress_yy = r.stress_zz = -100e3;
   o.effective_friction = false;
   EXPECT_TRUE(bridge::assign_liquefied_strength(plain, same, rows, {}, o).effective_materials.empty());
@@ -356,7 +356,7 @@ TEST(LiquefiedStrength, GroupByMaterialIsStableAndRenumbers) {
   bridge::ParticleList particles(5);
   const unsigned material[5] = {0, 2, 1, 2, 0};
   for (std::size_t k = 0; k < 5; ++k) {
-    ::new (static_cast<void*>(&particles[k])) mpm::io::ParticleRecord{};
+    ::new (static_cast<void*>(&particles[k])) mpm::ParticleRecord{};
     particles[k].id = static_cast<std::int64_t>(k);
     particles[k].material_id = material[k];
     particles[k].mass = static_cast<double>(k);

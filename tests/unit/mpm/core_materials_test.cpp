@@ -16,9 +16,9 @@ namespace {
 using mpm::core::LinearElastic;
 using mpm::core::MohrCoulomb;
 
-mpm::io::MaterialSpec mc_spec() {
-  mpm::io::MaterialSpec s;
-  s.type = mpm::io::MaterialType::MohrCoulomb2D;
+mpm::MaterialSpec mc_spec() {
+  mpm::MaterialSpec s;
+  s.type = mpm::MaterialType::MohrCoulomb2D;
   s.density = 2000;
   s.youngs_modulus = 1e7;
   s.poisson_ratio = 0.3;
@@ -37,7 +37,7 @@ mpm::io::MaterialSpec mc_spec() {
 }
 
 TEST(LinearElastic, PlaneStrainHooke) {
-  mpm::io::MaterialSpec s;
+  mpm::MaterialSpec s;
   s.youngs_modulus = 2e7;
   s.poisson_ratio = 0.25;
   const LinearElastic m = LinearElastic::from(s);

@@ -16,10 +16,10 @@ namespace {
 
 using namespace mpm_test;
 using mpm::core::Simulation;
-using mpm::io::ParticleRecord;
+using mpm::ParticleRecord;
 
 /// A small Mohr-Coulomb column that collapses (K0 stresses, rough base, roller wall).
-Deck collapsing_column(mpm::io::Scheme scheme, CellType type, const std::string& smoothing = "none") {
+Deck collapsing_column(mpm::Scheme scheme, CellType type, const std::string& smoothing = "none") {
   Deck deck = mpm_test::collapsing_column(make_grid(0, 0, 0.5, 16, 8, type), mohr_coulomb(3, 1800, 5e6, 0.3, 30, 200, 0),
                                           2, 3, 2, 0.4);
   deck.analysis.scheme = scheme;
@@ -71,7 +71,7 @@ TEST(Simulation, GivenVolumeWithoutSizeGetsTheDefaultSize) {
 }
 
 TEST(Simulation, AutomaticTimeStepFromCfl) {
-  Deck deck = collapsing_column(mpm::io::Scheme::USL, CellType::Linear4);
+  Deck deck = collapsing_column(mpm::Scheme::USL, CellType::Linear4);
   const double K = 5e6 / (3 * 0.4), G = 5e6 / 2.6, cp = std::sqrt((K + 4 * G / 3) / 1800);
   EXPECT_CLOSE(Simulation(deck, 1).dt(), 0.5 * 0.5 / cp, 0, 1e-14);
   deck.analysis.dt = 1e-4;  // the deck's dt is an upper bound
@@ -84,7 +84,7 @@ TEST(Simulation, AutomaticTimeStepFromCfl) {
 }
 
 TEST(Simulation, MohrCoulombStateVariablesInSnapshot) {
-  Simulation sim(collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16), 1);
+  Simulation sim(collapsing_column(mpm::Scheme::MUSL, CellType::Gimp16), 1);
   for (int i = 0; i < 50; ++i) sim.step();
   const auto ps = sim.snapshot();
   double pd_max = 0;
@@ -111,7 +111,7 @@ TEST(Simulation, MixedMaterialsMatchSingleMaterialRuns) {
     if (with_mc) fill_block(deck, 0, 2, 0, 2, 2, 0, 0);
     if (with_elastic) fill_block(deck, 5, 7, 0, 2, 2, 1, 1000);
     deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; }), 1, 0.0});
-    deck.analysis.scheme = mpm::io::Scheme::MUSL;
+    deck.analysis.scheme = mpm::Scheme::MUSL;
     deck.analysis.gravity = {0, -9.81};
     deck.analysis.dt = 1e-3;
     return deck;
@@ -192,7 +192,7 @@ TEST(Simulation, CundallDampingBringsAColumnToRestFaster) {
     deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double y) { return y <= 1e-9; }), 1, 0.0});
     deck.velocity_constraints.push_back({nodes_where(deck.grid, [](double, double) { return true; }), 0, 0.0});
     deck.analysis.gravity = {0, -9.81};
-    deck.analysis.scheme = mpm::io::Scheme::MUSL;
+    deck.analysis.scheme = mpm::Scheme::MUSL;
     deck.analysis.cfl = 0.5;
     deck.analysis.dt = 1.0;
     deck.analysis.cundall_damping = damping;
@@ -205,7 +205,7 @@ TEST(Simulation, CundallDampingBringsAColumnToRestFaster) {
   EXPECT_LT(damped, 0.01 * undamped);
 }
 
-class Resume : public ::testing::TestWithParam<std::tuple<mpm::io::Scheme, CellType, std::string, int>> {};
+class Resume : public ::testing::TestWithParam<std::tuple<mpm::Scheme, CellType, std::string, int>> {};
 
 TEST_P(Resume, ContinuesBitIdentically) {
   const auto [scheme, type, smoothing, threads] = GetParam();
@@ -231,10 +231,10 @@ TEST_P(Resume, ContinuesBitIdentically) {
 TEST(Simulation, ApicResumeContinuesBitIdenticallyFromItsMatrices) {
   // The APIC state is (v_p, B_p): resumed with the matrices of the snapshot the run continues bit for
   // bit; resumed from zero matrices (a particle file without them) it does not.
-  for (const auto& [scheme, type] : {std::make_pair(mpm::io::Scheme::MUSL, CellType::Gimp16),
-                                     std::make_pair(mpm::io::Scheme::USF, CellType::Linear4)}) {
+  for (const auto& [scheme, type] : {std::make_pair(mpm::Scheme::MUSL, CellType::Gimp16),
+                                     std::make_pair(mpm::Scheme::USF, CellType::Linear4)}) {
     Deck deck = collapsing_column(scheme, type);
-    deck.analysis.transfer = mpm::io::Transfer::APIC;
+    deck.analysis.transfer = mpm::Transfer::APIC;
     Simulation full(deck, 2);
     Deck resumed_deck = deck, zero_deck = deck;
     for (int i = 0; i < 60; ++i) {
@@ -262,7 +262,7 @@ TEST(Simulation, LaggedFrictionResumeContinuesBitIdenticallyFromItsMemory) {
   // resumed with the memory of the snapshot the run continues bit for bit; resumed without it (the
   // strengths restart from the instantaneous normal forces) it does not; a memory for a node without a
   // lagged friction is refused.
-  Deck deck = collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16);
+  Deck deck = collapsing_column(mpm::Scheme::MUSL, CellType::Gimp16);
   ASSERT_EQ(deck.friction_constraints.size(), 1u);
   deck.friction_constraints[0].lag_slip_distance = 0.01;
   deck.friction_constraints[0].lag_reference_velocity = 0.1;
@@ -286,7 +286,7 @@ TEST(Simulation, LaggedFrictionResumeContinuesBitIdenticallyFromItsMemory) {
   EXPECT_TRUE(resumed.friction_memory_snapshot() == full.friction_memory_snapshot());
   EXPECT_FALSE(identical(fresh.snapshot(), full.snapshot()));
 
-  EXPECT_FALSE(Simulation(collapsing_column(mpm::io::Scheme::MUSL, CellType::Gimp16), 1).friction_memory_snapshot());
+  EXPECT_FALSE(Simulation(collapsing_column(mpm::Scheme::MUSL, CellType::Gimp16), 1).friction_memory_snapshot());
   Deck stray = resumed_deck;
   stray.friction_memory = {{static_cast<std::int64_t>(stray.grid.nodes_x * stray.grid.nodes_y - 1), 1.0, 1.0}};
   try {
@@ -299,25 +299,25 @@ TEST(Simulation, LaggedFrictionResumeContinuesBitIdenticallyFromItsMemory) {
 
 INSTANTIATE_TEST_SUITE_P(
     SchemesShapesRemediesThreads, Resume,
-    ::testing::Values(std::make_tuple(mpm::io::Scheme::USF, CellType::Gimp16, std::string("none"), 1),
-                      std::make_tuple(mpm::io::Scheme::USL, CellType::Gimp16, std::string("none"), 2),
-                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Linear4, std::string("nodal_strain"), 2),
-                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Gimp16, std::string("cell_volumetric"), 2),
-                      std::make_tuple(mpm::io::Scheme::MUSL, CellType::Gimp16, std::string("cell_strain"), 2),
-                      std::make_tuple(mpm::io::Scheme::USF, CellType::Gimp16, std::string("nodal_volumetric"), 2)));
+    ::testing::Values(std::make_tuple(mpm::Scheme::USF, CellType::Gimp16, std::string("none"), 1),
+                      std::make_tuple(mpm::Scheme::USL, CellType::Gimp16, std::string("none"), 2),
+                      std::make_tuple(mpm::Scheme::MUSL, CellType::Linear4, std::string("nodal_strain"), 2),
+                      std::make_tuple(mpm::Scheme::MUSL, CellType::Gimp16, std::string("cell_volumetric"), 2),
+                      std::make_tuple(mpm::Scheme::MUSL, CellType::Gimp16, std::string("cell_strain"), 2),
+                      std::make_tuple(mpm::Scheme::USF, CellType::Gimp16, std::string("nodal_volumetric"), 2)));
 
 TEST(Simulation, BitIdenticalForAnyThreadCount) {
   // Work is split into chunks that depend on the particle state only, and their grid contributions
   // are summed in chunk order: the thread count cannot change a bit.
-  using mpm::io::Transfer;
-  const std::tuple<mpm::io::Scheme, const char*, Transfer> cases[] = {
-      {mpm::io::Scheme::MUSL, "none", Transfer::FLIP},
-      {mpm::io::Scheme::MUSL, "nodal_strain", Transfer::FLIP},
-      {mpm::io::Scheme::USF, "nodal_strain", Transfer::FLIP},
-      {mpm::io::Scheme::USL, "cell_volumetric", Transfer::FLIP},
-      {mpm::io::Scheme::MUSL, "cell_strain", Transfer::FLIP},
-      {mpm::io::Scheme::MUSL, "nodal_volumetric", Transfer::FLIP},
-      {mpm::io::Scheme::MUSL, "none", Transfer::APIC}};
+  using mpm::Transfer;
+  const std::tuple<mpm::Scheme, const char*, Transfer> cases[] = {
+      {mpm::Scheme::MUSL, "none", Transfer::FLIP},
+      {mpm::Scheme::MUSL, "nodal_strain", Transfer::FLIP},
+      {mpm::Scheme::USF, "nodal_strain", Transfer::FLIP},
+      {mpm::Scheme::USL, "cell_volumetric", Transfer::FLIP},
+      {mpm::Scheme::MUSL, "cell_strain", Transfer::FLIP},
+      {mpm::Scheme::MUSL, "nodal_volumetric", Transfer::FLIP},
+      {mpm::Scheme::MUSL, "none", Transfer::APIC}};
   for (const auto& [scheme, smoothing, transfer] : cases) {
     Deck deck = collapsing_column(scheme, CellType::Gimp16, smoothing);
     deck.analysis.transfer = transfer;
@@ -354,8 +354,8 @@ TEST(Simulation, StencilRunsChangeNoBit) {
   // runs off must not change a bit: of any scheme, transfer, cell type and remedy, over steps in which
   // particles change cell and stencil quadrant (the re-sort) and the column yields.
   if (!common::wide_vector_kernels()) GTEST_SKIP() << "no 256-bit vector registers: the runs are off either way";
-  using mpm::io::Scheme;
-  using mpm::io::Transfer;
+  using mpm::Scheme;
+  using mpm::Transfer;
   struct Case {
     const char* name;
     Scheme scheme;
@@ -479,7 +479,7 @@ TEST(Simulation, RunawayVelocityIsAnErrorNamingStepParticleAndField) {
 }
 
 TEST(Simulation, InputErrorsNameTheProblem) {
-  Deck deck = collapsing_column(mpm::io::Scheme::USF, CellType::Linear4);
+  Deck deck = collapsing_column(mpm::Scheme::USF, CellType::Linear4);
   Deck bad_material = deck;
   bad_material.particles[3].material_id = 9;
   try {
@@ -504,15 +504,15 @@ TEST(Simulation, InputErrorsNameTheProblem) {
   EXPECT_THROW(Simulation(gimp_without_halo, 1), common::InputError);
   // Transfers that contradict each other in a deck built in code (the reader refuses them in JSON).
   Deck apic_pic = deck;
-  apic_pic.analysis.transfer = mpm::io::Transfer::APIC;
+  apic_pic.analysis.transfer = mpm::Transfer::APIC;
   apic_pic.analysis.velocity_update = true;
   EXPECT_THROW(Simulation(apic_pic, 1), common::InputError);
   Deck apic_blend = deck;
-  apic_blend.analysis.transfer = mpm::io::Transfer::APIC;
+  apic_blend.analysis.transfer = mpm::Transfer::APIC;
   apic_blend.analysis.pic_blend = 0.02;
   EXPECT_THROW(Simulation(apic_blend, 1), common::InputError);
   Deck short_affine = deck;
-  short_affine.analysis.transfer = mpm::io::Transfer::APIC;
+  short_affine.analysis.transfer = mpm::Transfer::APIC;
   short_affine.particle_affine.resize(2);
   EXPECT_THROW(Simulation(short_affine, 1), common::InputError);
 }

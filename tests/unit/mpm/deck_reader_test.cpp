@@ -12,6 +12,7 @@
 
 #include "common/input_error.hpp"
 #include "mpm/io/deck_reader.hpp"
+#include "mpm/io/particle_table.hpp"
 #include "support/scratch.hpp"
 #include "support/tolerance.hpp"
 
@@ -62,7 +63,7 @@ class SmallDeck {
     fs::remove(dir.parent_path(), ec);  // the per-process folder, once empty
   }
   void write(const std::string& file, const std::string& text) const { std::ofstream(dir / file) << text; }
-  mpm::io::Deck read() const {
+  mpm::Deck read() const {
     write("mpm.json", deck.dump(2));
     return mpm::io::read_deck(dir, "mpm.json");
   }
@@ -97,7 +98,7 @@ TEST(DeckReader, ReadsTheSmallDeck) {
   EXPECT_EQ(deck.particles[3].id, 3);
   EXPECT_EQ(deck.particles[3].coord_y, 1.75);
   EXPECT_EQ(deck.particles[0].volume, 0.0);  // the engine applies CB-Geo's defaults
-  EXPECT_EQ(deck.analysis.scheme, mpm::io::Scheme::USL);
+  EXPECT_EQ(deck.analysis.scheme, mpm::Scheme::USL);
   EXPECT_EQ(deck.analysis.cundall_damping, 0.05);
   EXPECT_EQ(deck.analysis.gravity.y(), -9.81);
   ASSERT_EQ(deck.velocity_constraints.size(), 1u);
@@ -202,12 +203,12 @@ TEST(DeckReader, ParticleStressesVolumesAndMaterialSets) {
   EXPECT_EQ(deck.particles[0].material_id, 0u);
   ASSERT_EQ(deck.materials.size(), 2u);
   EXPECT_CLOSE(deck.materials[1].friction, M_PI / 6, 1e-15, 0);  // degrees -> radians
-  EXPECT_EQ(deck.materials[1].separation_volume_ratio, mpm::io::kDefaultSeparationVolumeRatio);  // absent
+  EXPECT_EQ(deck.materials[1].separation_volume_ratio, mpm::kDefaultSeparationVolumeRatio);  // absent
 }
 
 TEST(DeckReader, ReadsTheCbGeoGimpColumnDeck) {
   const auto deck = mpm::io::read_deck(kCbgeo / "mc_column_gimp_short", "mpm.json");
-  EXPECT_EQ(deck.grid.cell_type, mpm::io::CellType::Gimp16);
+  EXPECT_EQ(deck.grid.cell_type, mpm::CellType::Gimp16);
   EXPECT_EQ(deck.grid.nodes_x, 63);  // 60 cells + the halo ring
   EXPECT_EQ(deck.grid.nodes_y, 23);
   EXPECT_CLOSE(deck.grid.x0, -0.5, 1e-12, 0);
@@ -217,7 +218,7 @@ TEST(DeckReader, ReadsTheCbGeoGimpColumnDeck) {
   EXPECT_EQ(deck.particles.size(), 1280u);
   EXPECT_CLOSE(deck.particles[0].stress_yy, -139056.75, 1e-9, 0);
   ASSERT_EQ(deck.materials.size(), 1u);
-  EXPECT_EQ(deck.materials[0].type, mpm::io::MaterialType::MohrCoulomb2D);
+  EXPECT_EQ(deck.materials[0].type, mpm::MaterialType::MohrCoulomb2D);
   EXPECT_CLOSE(deck.materials[0].friction, M_PI / 6, 1e-15, 0);
   EXPECT_EQ(deck.materials[0].tension_cutoff, 300.0);
   EXPECT_EQ(deck.velocity_constraints.size(), 3u);
@@ -258,14 +259,14 @@ TEST(DeckReader, ResumeWithALaggedFrictionReadsItsMemoryOrWarnsThatItRestarts) {
   // The same file with the dataset: read, no warning.
   const auto file = dir / "results/bar_resume/particles000.h5";
   const auto table = mpm::io::read_particle_table(file);
-  const auto rewrite = [&](const std::vector<mpm::io::FrictionMemoryRecord>& memory) {
+  const auto rewrite = [&](const std::vector<mpm::FrictionMemoryRecord>& memory) {
     std::filesystem::remove(file);
     mpm::io::write_particle_table(file, table,
                                   [&](std::int64_t h5) { mpm::io::write_friction_memory_dataset(h5, memory, "test"); });
   };
   ASSERT_FALSE(deck.friction_constraints.empty());
   ASSERT_FALSE(deck.friction_constraints[0].nodes.empty());
-  const std::vector<mpm::io::FrictionMemoryRecord> memory = {{deck.friction_constraints[0].nodes[0], 12.5, 0.75}};
+  const std::vector<mpm::FrictionMemoryRecord> memory = {{deck.friction_constraints[0].nodes[0], 12.5, 0.75}};
   rewrite(memory);
   const auto with = mpm::io::read_deck(dir, "mpm.json");
   EXPECT_TRUE(with.warnings.empty());
@@ -482,7 +483,7 @@ TEST(DeckReader, VtkKeysTakeCbGeoNamesAndBothStateVariableForms) {
   SmallDeck d("vtk_ok");
   d.deck["post_processing"]["vtk"] = json::parse(R"(["stresses", "velocities", "pdstrain", "stresses"])");
   d.deck["post_processing"]["vtk_statevars"] = json::parse(R"(["pdstrain", {"phase_id": 0, "statevars": ["phi"]}])");
-  const mpm::io::Deck deck = d.read();
+  const mpm::Deck deck = d.read();
   EXPECT_EQ(deck.output.vtk_fields, (std::vector<std::string>{"stress", "velocity", "pdstrain"}));
   EXPECT_EQ(deck.output.vtk_statevars, (std::vector<std::string>{"pdstrain", "phi"}));
 }
@@ -491,7 +492,7 @@ TEST(DeckReader, VtkKeysTakeCbGeoNamesAndBothStateVariableForms) {
 TEST(DeckReader, ParticleOutputStepsAreOutputStepsBelowNsteps) {
   SmallDeck d("pos_ok");
   d.deck["post_processing"]["particle_output_steps"] = json::parse("[90, 0, 30]");
-  const mpm::io::Deck deck = d.read();
+  const mpm::Deck deck = d.read();
   EXPECT_EQ(deck.output.particle_output_steps, (std::vector<long long>{0, 30, 90}));
   EXPECT_TRUE(deck.output.writes_particles(30));
   EXPECT_FALSE(deck.output.writes_particles(40));
@@ -539,14 +540,14 @@ TEST(DeckReader, Extensions) {
 
 TEST(DeckReader, VelocityTransferKeys) {
   // analysis.transfer ("flip", "pic", "apic") and CB-Geo's velocity_update (true = PIC) decide together.
-  const std::vector<std::pair<json, mpm::io::Transfer>> accepted = {
-      {json::object(), mpm::io::Transfer::FLIP},
-      {{{"velocity_update", true}}, mpm::io::Transfer::PIC},
-      {{{"transfer", "apic"}}, mpm::io::Transfer::APIC},
-      {{{"transfer", "apic"}, {"velocity_update", false}}, mpm::io::Transfer::APIC},
-      {{{"transfer", "pic"}, {"velocity_update", true}}, mpm::io::Transfer::PIC},
-      {{{"transfer", "pic"}}, mpm::io::Transfer::PIC},
-      {{{"transfer", "flip"}, {"pic_blend", 0.02}}, mpm::io::Transfer::FLIP},
+  const std::vector<std::pair<json, mpm::Transfer>> accepted = {
+      {json::object(), mpm::Transfer::FLIP},
+      {{{"velocity_update", true}}, mpm::Transfer::PIC},
+      {{{"transfer", "apic"}}, mpm::Transfer::APIC},
+      {{{"transfer", "apic"}, {"velocity_update", false}}, mpm::Transfer::APIC},
+      {{{"transfer", "pic"}, {"velocity_update", true}}, mpm::Transfer::PIC},
+      {{{"transfer", "pic"}}, mpm::Transfer::PIC},
+      {{{"transfer", "flip"}, {"pic_blend", 0.02}}, mpm::Transfer::FLIP},
   };
   for (const auto& [keys, transfer] : accepted) {
     SCOPED_TRACE(keys.dump());
@@ -555,8 +556,8 @@ TEST(DeckReader, VelocityTransferKeys) {
     for (const auto& [k, v] : keys.items()) d.deck["analysis"][k] = v;
     const auto deck = d.read();
     EXPECT_EQ(deck.analysis.transfer, transfer);
-    EXPECT_EQ(deck.analysis.velocity_update, transfer == mpm::io::Transfer::PIC);
-    EXPECT_EQ(deck.analysis.pic_blend, transfer == mpm::io::Transfer::PIC ? 1.0 : keys.value("pic_blend", 0.0));
+    EXPECT_EQ(deck.analysis.velocity_update, transfer == mpm::Transfer::PIC);
+    EXPECT_EQ(deck.analysis.pic_blend, transfer == mpm::Transfer::PIC ? 1.0 : keys.value("pic_blend", 0.0));
   }
   const std::vector<std::pair<json, std::string>> refused = {
       {{{"transfer", "apic"}, {"velocity_update", true}}, "analysis.transfer: \"apic\" contradicts velocity_update true"},
@@ -581,7 +582,7 @@ TEST(DeckReader, GeneratedGimpGridWithNamedBoundarySets) {
     "boundary_conditions": {"velocity_constraints": [{"nset_id": "left", "dir": 0, "velocity": 0}],
                             "friction_constraints": [{"nset_id": "bottom", "dir": 1, "sign_n": -1, "friction": 0.5}]}})");
   const auto deck = d.read();
-  EXPECT_EQ(deck.grid.cell_type, mpm::io::CellType::Gimp16);
+  EXPECT_EQ(deck.grid.cell_type, mpm::CellType::Gimp16);
   EXPECT_EQ(deck.grid.nodes_x, 8 + 3);  // 9 node columns + the GIMP halo on both sides
   EXPECT_EQ(deck.grid.nodes_y, 6 + 3);
   EXPECT_EQ(deck.grid.x0, -0.5);

@@ -13,7 +13,7 @@
 #include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
-using mpm::io::ParticleRecord;
+using mpm::ParticleRecord;
 
 TEST(ParticleTable, RoundTripKeepsEveryMember) {
   std::vector<ParticleRecord> in(3);
@@ -74,9 +74,9 @@ TEST(ParticleTable, FrictionMemoryDatasetRoundTripsExactlyAndRefusesBadRows) {
   // The lagged friction strengths (node, N_s, node mass) beside /table; zero rows is a dataset too (a
   // lagged run with no node touched), told apart from none.
   const std::vector<ParticleRecord> in(1);
-  const std::vector<mpm::io::FrictionMemoryRecord> memory = {{7, 1234.5, 0.0625}, {(1LL << 40) + 3, 0.0, 1e-300}};
+  const std::vector<mpm::FrictionMemoryRecord> memory = {{7, 1234.5, 0.0625}, {(1LL << 40) + 3, 0.0, 1e-300}};
   const test_support::ScratchDir dir("geoflow_particle_table_friction_memory");
-  const auto write = [&](const char* name, std::span<const mpm::io::FrictionMemoryRecord> rows) {
+  const auto write = [&](const char* name, std::span<const mpm::FrictionMemoryRecord> rows) {
     const auto file = dir.path() / name;
     mpm::io::write_particle_table(file, in, [&](std::int64_t h5) { mpm::io::write_friction_memory_dataset(h5, rows, name); });
     return file;
@@ -90,10 +90,10 @@ TEST(ParticleTable, FrictionMemoryDatasetRoundTripsExactlyAndRefusesBadRows) {
   const auto plain = dir.path() / "plain.h5";
   mpm::io::write_particle_table(plain, in);
   EXPECT_FALSE(mpm::io::read_friction_memory_dataset(plain).has_value());
-  for (const auto& bad : {mpm::io::FrictionMemoryRecord{-1, 1.0, 1.0}, mpm::io::FrictionMemoryRecord{2, -1.0, 1.0},
-                          mpm::io::FrictionMemoryRecord{2, 1.0, 0.0},
-                          mpm::io::FrictionMemoryRecord{2, std::numeric_limits<double>::infinity(), 1.0}}) {
-    const std::vector<mpm::io::FrictionMemoryRecord> rows = {memory[0], bad};
+  for (const auto& bad : {mpm::FrictionMemoryRecord{-1, 1.0, 1.0}, mpm::FrictionMemoryRecord{2, -1.0, 1.0},
+                          mpm::FrictionMemoryRecord{2, 1.0, 0.0},
+                          mpm::FrictionMemoryRecord{2, std::numeric_limits<double>::infinity(), 1.0}}) {
+    const std::vector<mpm::FrictionMemoryRecord> rows = {memory[0], bad};
     try {
       mpm::io::read_friction_memory_dataset(write("bad.h5", rows));
       ADD_FAILURE() << "row " << bad.node << " " << bad.force << " " << bad.mass << " must be refused";

@@ -18,10 +18,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-using mpm::io::PorePressureRecord;
+using mpm::PorePressureRecord;
 
 fs::path write(const fs::path& file, std::size_t particles, const std::vector<PorePressureRecord>* rows) {
-  std::vector<mpm::io::ParticleRecord> table(particles);
+  std::vector<mpm::ParticleRecord> table(particles);
   for (std::size_t k = 0; k < particles; ++k) table[k].id = static_cast<std::int64_t>(k);
   mpm::io::write_particle_table(file, table, [&](std::int64_t h5) {
     if (rows) mpm::io::write_pore_pressure_dataset(h5, *rows, file.string());
@@ -80,13 +80,13 @@ TEST(PorePressureDataset, ResumeSortsTheRowsWithTheParticlesAndLaterStatesKeepTh
     }
   }
   // A later state without the second particle.
-  std::vector<mpm::io::ParticleRecord> later = deck.particles;
+  std::vector<mpm::ParticleRecord> later = deck.particles;
   later.erase(later.begin() + 1);
   const auto carried = mpm::io::carried_pore_pressure(deck, later);
   ASSERT_EQ(carried.size(), later.size());
   for (std::size_t k = 0; k < later.size(); ++k) EXPECT_EQ(carried[k].ru, 0.001 * static_cast<double>(later[k].id));
   // A deck resumed from a file without the dataset carries none.
-  mpm::io::Deck plain = deck;
+  mpm::Deck plain = deck;
   plain.particle_pore_pressure.reset();
   EXPECT_TRUE(mpm::io::carried_pore_pressure(plain, later).empty());
   fs::remove_all(dir);

@@ -19,7 +19,7 @@
 #include "support/tolerance.hpp"
 
 namespace fs = std::filesystem;
-using mpm::io::ParticleRecord;
+using mpm::ParticleRecord;
 
 namespace {
 
@@ -39,8 +39,8 @@ std::vector<ParticleRecord> four_particles() {
   return ps;
 }
 
-mpm::io::Grid unit_grid() {
-  mpm::io::Grid g;
+mpm::Grid unit_grid() {
+  mpm::Grid g;
   g.nodes_x = 5;
   g.nodes_y = 4;
   g.xmax = 4;
@@ -57,8 +57,8 @@ std::string slurp(const fs::path& f) {
 
 /// A run of 101 steps with an output every 50 steps into results/run/ of an emptied scratch folder
 /// named `tag` + the process id.
-mpm::io::Deck output_deck(const std::string& tag) {
-  mpm::io::Deck deck;
+mpm::Deck output_deck(const std::string& tag) {
+  mpm::Deck deck;
   deck.working_dir = fs::temp_directory_path() / (tag + std::to_string(::getpid()));
   fs::remove_all(deck.working_dir);
   deck.grid = unit_grid();
@@ -107,7 +107,7 @@ TEST(Series, CheckerboardIndexIsTheRmsDeviationFromTheCellMeanOverRhoGH) {
 }
 
 TEST(Results, WritesParticleFilesXdmfAndSeries) {
-  mpm::io::Deck deck = output_deck("geoflow_results_");
+  mpm::Deck deck = output_deck("geoflow_results_");
   deck.analysis.gravity = Eigen::Vector2d(0, -9.81);
   mpm::io::ResultsWriter w(deck);
   EXPECT_FALSE(fs::exists(w.folder()));  // nothing written before the first output
@@ -165,7 +165,7 @@ TEST(Results, WritesParticleFilesXdmfAndSeries) {
 // post_processing.particle_output_steps: particle files only after the listed output steps, a series
 // row after every output step, and the XDMF lists only the files written.
 TEST(Results, ParticleFilesOnlyAtTheListedOutputSteps) {
-  mpm::io::Deck deck = output_deck("geoflow_results_steps_");
+  mpm::Deck deck = output_deck("geoflow_results_steps_");
   deck.output.particle_output_steps = {0, 100};
   mpm::io::ResultsWriter w(deck);
   const auto ps = four_particles();
@@ -216,7 +216,7 @@ TEST(ParticleFields, TensorsInParaViewOrderSizesAndStateVariables) {
 }
 
 TEST(Results, StartFrameGridAndVtkFiles) {
-  mpm::io::Deck deck = output_deck("geoflow_results_vtk_");
+  mpm::Deck deck = output_deck("geoflow_results_vtk_");
   deck.output.vtk_fields = {"stress"};
   deck.output.vtk_statevars = {"pdstrain"};
   deck.velocity_constraints.push_back({{0, 1, 2}, 1, 0.0});
@@ -260,7 +260,7 @@ TEST(Results, EveryOutputPathIsCheckedBeforeTheFirstFileIsWritten) {
   // A particle file of a later output step, particles.xdmf, or the results folder itself that is not a
   // regular file (directory) is refused with common::InputError before grid.vtr or the start state exist.
   for (const std::string blocked : {"particles050.h5", "particles.xdmf", "series.csv"}) {
-    mpm::io::Deck deck = output_deck("geoflow_results_blocked_");
+    mpm::Deck deck = output_deck("geoflow_results_blocked_");
     const fs::path folder = deck.working_dir / "results/run";
     fs::create_directories(folder / blocked);
     mpm::io::ResultsWriter w(deck);
@@ -269,7 +269,7 @@ TEST(Results, EveryOutputPathIsCheckedBeforeTheFirstFileIsWritten) {
     EXPECT_FALSE(fs::exists(folder / "initial_state.h5")) << blocked;
     fs::remove_all(deck.working_dir);
   }
-  mpm::io::Deck deck = output_deck("geoflow_results_folder_");
+  mpm::Deck deck = output_deck("geoflow_results_folder_");
   fs::create_directories(deck.working_dir / "results");
   std::ofstream(deck.working_dir / "results/run") << "a file where the results folder goes\n";
   mpm::io::ResultsWriter w(deck);

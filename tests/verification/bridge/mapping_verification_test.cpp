@@ -201,7 +201,7 @@ TEST(BridgeMapping, RecordsAreByteReproducible) {
   const auto a = bridge::generate_particles(st, nodal, {});
   const auto b = bridge::generate_particles(st, nodal, {});
   ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(mpm::io::ParticleRecord)), 0);
+  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(mpm::ParticleRecord)), 0);
   // The padding after `status` (bytes 241-243) and `nstate_vars` (252-255) is zero.
   const auto* bytes = reinterpret_cast<const unsigned char*>(a.data());
   for (int k : {241, 242, 243, 252, 253, 254, 255}) EXPECT_EQ(bytes[k], 0) << "byte " << k;

@@ -24,8 +24,8 @@
 namespace {
 
 using namespace mpm_test;
-using mpm::io::Scheme;
-using mpm::io::Transfer;
+using mpm::Scheme;
+using mpm::Transfer;
 
 const char* name(Transfer t) { return t == Transfer::APIC ? "APIC" : (t == Transfer::PIC ? "PIC" : "FLIP"); }
 

@@ -23,7 +23,7 @@
 namespace {
 
 using namespace mpm_test;
-using mpm::io::Scheme;
+using mpm::Scheme;
 
 constexpr double kG = 9.81, kMu = 0.3, kPulse = 0.5;  // s
 
@@ -42,13 +42,13 @@ Shaken shake(double amplitude, Scheme scheme, double t_end) {
   spec.type = CellType::Gimp16;
   Deck deck = sliding_block(spec);
   deck.analysis.scheme = scheme;
-  deck.analysis.transfer = mpm::io::Transfer::APIC;
+  deck.analysis.transfer = mpm::Transfer::APIC;
   deck.analysis.cfl = 0.4;
   deck.analysis.dt = 1.0;
-  mpm::io::BaseAcceleration base;
+  mpm::BaseAcceleration base;
   base.dir = 0;
   base.acceleration = amplitude;
-  base.history = mpm::io::LinearFunction{{0.0, kPulse, kPulse + 1e-9}, {1.0, 1.0, 0.0}};  // a rectangular pulse of length kPulse
+  base.history = mpm::LinearFunction{{0.0, kPulse, kPulse + 1e-9}, {1.0, 1.0, 0.0}};  // a rectangular pulse of length kPulse
   deck.base_acceleration = base;
   mpm::core::Simulation sim(deck, 1);
   Shaken s;

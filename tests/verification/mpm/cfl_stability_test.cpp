@@ -22,7 +22,7 @@ namespace {
 
 using namespace mpm_test;
 
-mpm::io::SeriesRow collapse(mpm::io::Scheme scheme, double cfl, double dt, double pic_blend, double t_end) {
+mpm::io::SeriesRow collapse(mpm::Scheme scheme, double cfl, double dt, double pic_blend, double t_end) {
   auto material = mohr_coulomb(0, 1800, 5e7, 0.3, 30, 500, 0);
   material.tension_cutoff = 300;
   Deck deck = collapsing_column(make_grid(0, 0, 0.5, 60, 20, CellType::Gimp16), material, 10, 8, 2, 0.5, 30);
@@ -39,9 +39,9 @@ mpm::io::SeriesRow collapse(mpm::io::Scheme scheme, double cfl, double dt, doubl
 
 TEST(CflStability, CollapsingColumnAtCflHalf) {
   const double t_end = 1.5;
-  const auto reference = collapse(mpm::io::Scheme::MUSL, 0.1, 1.0, 0.0, t_end);
+  const auto reference = collapse(mpm::Scheme::MUSL, 0.1, 1.0, 0.0, t_end);
   std::printf("CFL 0.1 MUSL FLIP: runout %.3f m\n", reference.runout_x_p98);
-  for (auto scheme : {mpm::io::Scheme::MUSL, mpm::io::Scheme::USF}) {
+  for (auto scheme : {mpm::Scheme::MUSL, mpm::Scheme::USF}) {
     SCOPED_TRACE(testing::Message() << "scheme " << static_cast<int>(scheme));
     const auto r = collapse(scheme, 0.5, 1.0, 0.0, t_end);
     std::printf("CFL 0.5 (dt %.2e) scheme %d FLIP: runout %.3f m, max speed %.3f m/s\n", r.dt,
@@ -51,8 +51,8 @@ TEST(CflStability, CollapsingColumnAtCflHalf) {
     EXPECT_GT(r.runout_x_p98, 11.0);                                // it did collapse (starts at 9.9 m)
     EXPECT_LT(r.max_speed, 15.0);                                   // no runaway (free fall from 8 m: 12.5 m/s)
   }
-  const auto musl = collapse(mpm::io::Scheme::MUSL, 0.5, 1.0, 0.02, t_end);
-  const auto usl = collapse(mpm::io::Scheme::USL, 0.5, 1.0, 0.02, t_end);
+  const auto musl = collapse(mpm::Scheme::MUSL, 0.5, 1.0, 0.02, t_end);
+  const auto usl = collapse(mpm::Scheme::USL, 0.5, 1.0, 0.02, t_end);
   std::printf("CFL 0.5, 2 %% PIC: runout %.3f m (MUSL), %.3f m (USL); max speed %.3f, %.3f m/s\n",
               musl.runout_x_p98, usl.runout_x_p98, musl.max_speed, usl.max_speed);
   EXPECT_CLOSE(usl.runout_x_p98, musl.runout_x_p98, 0.5, 0);

@@ -30,7 +30,7 @@ mpm::io::SeriesRow collapse(const std::string& smoothing, double t_end) {
   auto material = mohr_coulomb(0, 1800, 5e7, 0.3, 30, 500, 0);
   material.tension_cutoff = 300;
   Deck deck = collapsing_column(make_grid(0, 0, 0.5, 60, 20, CellType::Gimp16), material, 10, 8, 2, 0.5, 30);
-  deck.analysis.scheme = mpm::io::Scheme::USF;
+  deck.analysis.scheme = mpm::Scheme::USF;
   deck.analysis.dt = 1e-4;
   deck.analysis.stress_smoothing = smoothing;
   return run_to(deck, t_end);
@@ -65,7 +65,7 @@ mpm::io::SeriesRow study_column(const std::string& smoothing, double h, double t
   const int cells_x = static_cast<int>(std::lround(5 * width / h)), cells_y = static_cast<int>(std::lround((height + 3 * h) / h));
   Deck deck = collapsing_column(make_grid(0, -h, h, cells_x, cells_y, CellType::Gimp16), material, width, height, 4, 0.408);
   for (auto& p : deck.particles) p.stress_xx = p.stress_zz = nu / (1 - nu) * p.stress_yy;
-  deck.analysis.scheme = mpm::io::Scheme::MUSL;
+  deck.analysis.scheme = mpm::Scheme::MUSL;
   deck.analysis.cfl = 0.5;
   deck.analysis.dt = 1.0;  // an upper bound only: dt = 0.5 h / c_p
   deck.analysis.stress_smoothing = smoothing;

@@ -17,7 +17,7 @@ namespace {
 
 using namespace mpm_test;
 
-Deck disks_deck(mpm::io::Scheme scheme) {
+Deck disks_deck(mpm::Scheme scheme) {
   Deck deck;
   const double h = 0.05;
   deck.grid = make_grid(0, 0, h, 20, 20, CellType::Linear4);
@@ -25,12 +25,12 @@ Deck disks_deck(mpm::io::Scheme scheme) {
   // 2 x 2 particles per cell inside each disk (point-symmetric sets: ids of disk 2 mirror disk 1).
   const int ppd = 2, n = 20 * ppd;
   std::int64_t id = 0;
-  std::vector<mpm::io::ParticleRecord> second;
+  std::vector<mpm::ParticleRecord> second;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const double x = (i + 0.5) * h / ppd, y = (j + 0.5) * h / ppd;
       if (std::hypot(x - 0.2, y - 0.2) >= 0.2) continue;
-      mpm::io::ParticleRecord a{}, b{};
+      mpm::ParticleRecord a{}, b{};
       a.id = id;
       b.id = id + 100000;
       ++id;
@@ -49,7 +49,7 @@ Deck disks_deck(mpm::io::Scheme scheme) {
   return deck;
 }
 
-double strain_energy(const std::vector<mpm::io::ParticleRecord>& ps) {
+double strain_energy(const std::vector<mpm::ParticleRecord>& ps) {
   double e = 0;
   for (const auto& p : ps)
     e += 0.5 * p.volume * (p.stress_xx * p.strain_xx + p.stress_yy * p.strain_yy + p.tau_xy * p.gamma_xy);
@@ -57,7 +57,7 @@ double strain_energy(const std::vector<mpm::io::ParticleRecord>& ps) {
 }
 
 TEST(CollidingDisks, MomentumSymmetryAndEnergy) {
-  mpm::core::Simulation sim(disks_deck(mpm::io::Scheme::MUSL), 1);
+  mpm::core::Simulation sim(disks_deck(mpm::Scheme::MUSL), 1);
   const auto start = sim.snapshot();
   const double ke0 = totals(start).kinetic;
   double ke_min = ke0, e_max = ke0;
@@ -72,7 +72,7 @@ TEST(CollidingDisks, MomentumSymmetryAndEnergy) {
   }
   const auto end = sim.snapshot();
   // Point symmetry about (0.5, 0.5): particle id + 100000 mirrors particle id.
-  std::map<std::int64_t, const mpm::io::ParticleRecord*> by_id;
+  std::map<std::int64_t, const mpm::ParticleRecord*> by_id;
   for (const auto& p : end) by_id[p.id] = &p;
   for (const auto& p : end) {
     if (p.id >= 100000) continue;

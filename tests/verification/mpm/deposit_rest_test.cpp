@@ -24,8 +24,8 @@
 namespace {
 
 using namespace mpm_test;
-using mpm::io::Scheme;
-using mpm::io::Transfer;
+using mpm::Scheme;
+using mpm::Transfer;
 
 struct Rest {
   double stopped_at = -1;     ///< s: the first output time from which the largest speed stays < 0.05 m/s

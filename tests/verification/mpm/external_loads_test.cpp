@@ -23,8 +23,8 @@
 namespace {
 
 using namespace mpm_test;
-using mpm::io::Scheme;
-using mpm::io::Transfer;
+using mpm::Scheme;
+using mpm::Transfer;
 
 /// A free 2 m x 1 m elastic block (no gravity, no constraints) on uGIMP cells of 0.25 m in the middle of
 /// its grid.
@@ -51,7 +51,7 @@ TEST_P(ExternalLoads, NodalForcesGiveTheirImpulseExactly) {
   });
   ASSERT_EQ(inside.size(), 2u);
   const double F0 = 300.0, a = 1000.0, Fx = -50.0;
-  deck.nodal_forces.push_back({inside, 1, F0, mpm::io::SinFunction{a, 0.0}});
+  deck.nodal_forces.push_back({inside, 1, F0, mpm::SinFunction{a, 0.0}});
   deck.nodal_forces.push_back({{inside[0]}, 0, Fx, {}});
   mpm::core::Simulation sim(deck, 1);
   const int steps = 200;
@@ -69,7 +69,7 @@ TEST_P(ExternalLoads, NodalForcesGiveTheirImpulseExactly) {
 TEST_P(ExternalLoads, ParticleTractionIsTheTractionTimesTheFace) {
   const auto [scheme, transfer] = GetParam();
   Deck deck = free_block(scheme, transfer);
-  mpm::io::ParticleTraction top;
+  mpm::ParticleTraction top;
   for (const auto& p : deck.particles)
     if (p.coord_y > 2.4) top.particles.push_back(p.id);  // the top row (16 particles of side 0.125 m)
   ASSERT_EQ(top.particles.size(), 16u);
@@ -104,12 +104,12 @@ TEST(ExternalLoadsColumn, TractionOnTheTopCompressesAConfinedColumnUniaxially) {
     const auto& g = deck.grid;
     deck.velocity_constraints.push_back({nodes_where(g, [&](double x, double) { return x <= 1e-9 || x >= width - 1e-9; }), 0, 0.0});
     deck.velocity_constraints.push_back({nodes_where(g, [](double, double y) { return y <= 1e-9; }), 1, 0.0});
-    mpm::io::ParticleTraction top;
+    mpm::ParticleTraction top;
     for (const auto& p : deck.particles)
       if (p.coord_y > H - h / 2) top.particles.push_back(p.id);
     top.dir = 1;
     top.traction = -q;
-    top.function = mpm::io::LinearFunction{{0.0, 0.2}, {0.0, 1.0}};  // ramped over 0.2 s, then held
+    top.function = mpm::LinearFunction{{0.0, 0.2}, {0.0, 1.0}};  // ramped over 0.2 s, then held
     deck.particle_tractions.push_back(top);
     deck.analysis.scheme = Scheme::MUSL;
     deck.analysis.cfl = 0.5;

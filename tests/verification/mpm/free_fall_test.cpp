@@ -10,7 +10,7 @@ namespace {
 
 using namespace mpm_test;
 
-class FreeFall : public ::testing::TestWithParam<std::tuple<CellType, mpm::io::Scheme>> {};
+class FreeFall : public ::testing::TestWithParam<std::tuple<CellType, mpm::Scheme>> {};
 
 TEST_P(FreeFall, FollowsNewtonAndStaysStressFree) {
   Deck deck;
@@ -59,7 +59,7 @@ TEST(FreeFall, TinyDensityUnitsFallTheSame) {
 
 INSTANTIATE_TEST_SUITE_P(Schemes, FreeFall,
                          ::testing::Combine(::testing::Values(CellType::Linear4, CellType::Gimp16),
-                                            ::testing::Values(mpm::io::Scheme::USF, mpm::io::Scheme::USL,
-                                                              mpm::io::Scheme::MUSL)));
+                                            ::testing::Values(mpm::Scheme::USF, mpm::Scheme::USL,
+                                                              mpm::Scheme::MUSL)));
 
 }  // namespace

@@ -66,8 +66,8 @@
 namespace {
 
 using namespace mpm_test;
-using mpm::io::Scheme;
-using mpm::io::Transfer;
+using mpm::Scheme;
+using mpm::Transfer;
 
 constexpr double kG = 9.81;
 double deg(double a) { return a * std::acos(-1.0) / 180.0; }
@@ -100,7 +100,7 @@ struct Zone {
   double pd_base = 1e300;   ///< the smallest pdstrain of a particle in the base cell
 };
 
-Zone measure(const std::vector<mpm::io::ParticleRecord>& ps, const SlopeSpec& s) {
+Zone measure(const std::vector<mpm::ParticleRecord>& ps, const SlopeSpec& s) {
   Zone z;
   double m = 0, top = 0;
   for (const auto& p : ps) {

@@ -71,8 +71,8 @@ double closed_form_tau(double gamma, double pd0) {
   return std::clamp(tau, kResidual, kPeak);
 }
 
-mpm::io::MaterialSpec softening_material() {
-  mpm::io::MaterialSpec m = mohr_coulomb(0, kRho, kE, kNu, 0.0, kPeak, 0.0);
+mpm::MaterialSpec softening_material() {
+  mpm::MaterialSpec m = mohr_coulomb(0, kRho, kE, kNu, 0.0, kPeak, 0.0);
   m.residual_cohesion = kResidual;
   m.peak_pdstrain = kPdPeak;
   m.residual_pdstrain = kPdResidual;
@@ -94,8 +94,8 @@ Deck shear_deck() {
     deck.velocity_constraints.push_back({row, 0, kRate * y});
     deck.velocity_constraints.push_back({row, 1, 0.0});
   }
-  deck.analysis.scheme = mpm::io::Scheme::USF;
-  deck.analysis.transfer = mpm::io::Transfer::PIC;
+  deck.analysis.scheme = mpm::Scheme::USF;
+  deck.analysis.transfer = mpm::Transfer::PIC;
   deck.analysis.velocity_update = true;
   deck.analysis.dt = kDt;
   return deck;
@@ -158,7 +158,7 @@ Deck resumed_deck(const std::string& name, double pd0, unsigned count) {
   const auto dir = test_support::fresh_scratch_folder("geoflow_liquefied_softening", name);
   const Deck base = shear_deck();
   const long long nsteps = static_cast<long long>(std::lround(kGammaEnd / (kRate * kDt))) + 1;
-  std::vector<mpm::io::ParticleRecord> records = mpm::core::Simulation(base, 1).snapshot();  // masses, volumes
+  std::vector<mpm::ParticleRecord> records = mpm::core::Simulation(base, 1).snapshot();  // masses, volumes
   for (auto& r : records) {
     r.nstate_vars = count;
     std::fill(std::begin(r.svars), std::end(r.svars), 0.0);
@@ -168,7 +168,7 @@ Deck resumed_deck(const std::string& name, double pd0, unsigned count) {
   std::filesystem::create_directories(dir / "results/shear");
   mpm::io::write_particle_table(dir / "results/shear" / mpm::io::particle_file_name(0, nsteps), records);
   std::ofstream vel(dir / "velocity.txt");
-  const mpm::io::Grid& g = base.grid;
+  const mpm::Grid& g = base.grid;
   for (int j = 0; j < g.nodes_y; ++j)
     for (int i = 0; i < g.nodes_x; ++i) {
       vel << i + j * g.nodes_x << " 0 " << kRate * (g.y0 + j * g.hy) << "\n";

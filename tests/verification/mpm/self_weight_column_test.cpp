@@ -24,7 +24,7 @@ struct ColumnResult {
   double base_reaction_error = 0;  ///< |sum of syy V / (H*width) - mean exact| / (rho g H)
 };
 
-ColumnResult run_column(CellType type, mpm::io::Scheme scheme, const std::string& smoothing, int ppd) {
+ColumnResult run_column(CellType type, mpm::Scheme scheme, const std::string& smoothing, int ppd) {
   const double H = 10.0, width = 1.0, h = 0.5, rho = 1000.0, g = 9.81;
   Deck deck;
   deck.grid = make_grid(0, 0, h, 2, 24, type);
@@ -58,7 +58,7 @@ ColumnResult run_column(CellType type, mpm::io::Scheme scheme, const std::string
 
 TEST(SelfWeightColumn, StressProfileMatchesRhoGDepth) {
   for (auto type : {CellType::Linear4, CellType::Gimp16}) {
-    for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+    for (auto scheme : {mpm::Scheme::USF, mpm::Scheme::USL, mpm::Scheme::MUSL}) {
       const ColumnResult r = run_column(type, scheme, "none", 2);
       EXPECT_LT(r.rms_error, 0.02);  // the stair-step bound h / (4 H) = 0.0125, plus what is left of the waves
       EXPECT_LT(r.max_error, 0.02);
@@ -71,8 +71,8 @@ TEST(SelfWeightColumn, NodalStrainRemedyLowersTheStressError) {
   // Without a remedy each cell's particles share one strain (stair-step profile: RMS error h / (4 H)
   // at 2 particles per cell and direction); the nodal_strain remedy makes it continuous.
   for (auto type : {CellType::Linear4, CellType::Gimp16}) {
-    const ColumnResult none = run_column(type, mpm::io::Scheme::MUSL, "none", 2);
-    const ColumnResult nodal = run_column(type, mpm::io::Scheme::MUSL, "nodal_strain", 2);
+    const ColumnResult none = run_column(type, mpm::Scheme::MUSL, "none", 2);
+    const ColumnResult nodal = run_column(type, mpm::Scheme::MUSL, "nodal_strain", 2);
     std::printf("cell type %d: none RMS %.4f max %.4f | nodal_strain RMS %.4f max %.4f\n", static_cast<int>(type),
                 none.rms_error, none.max_error, nodal.rms_error, nodal.max_error);
     EXPECT_CLOSE(none.rms_error, 0.5 / (4 * 10.0), 1e-3, 0);
@@ -88,9 +88,9 @@ TEST(SelfWeightColumn, NodalStrainRemedyLowersTheStressError) {
 TEST(SelfWeightColumn, CellRemediesKeepTheProfile) {
   // The cell-constant dilatation (and cell_strain's cell-mean strain) cannot improve a profile that is
   // already cell-constant; they must not make it worse either (they target oscillation inside cells).
-  const ColumnResult none = run_column(CellType::Gimp16, mpm::io::Scheme::MUSL, "none", 2);
+  const ColumnResult none = run_column(CellType::Gimp16, mpm::Scheme::MUSL, "none", 2);
   for (const char* remedy : {"cell_volumetric", "cell_strain"}) {
-    const ColumnResult cell = run_column(CellType::Gimp16, mpm::io::Scheme::MUSL, remedy, 2);
+    const ColumnResult cell = run_column(CellType::Gimp16, mpm::Scheme::MUSL, remedy, 2);
     EXPECT_CLOSE(cell.rms_error, none.rms_error, 1e-3, 0) << remedy;
     EXPECT_LT(cell.kinetic, 0.1) << remedy;
   }

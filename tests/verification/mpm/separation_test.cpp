@@ -28,7 +28,7 @@ struct Extension {
 
 Extension pull_apart(double separation_ratio) {
   constexpr double rho = 1925, phi = 22.2, c = 100, rate = 0.5, h = 1.0;
-  mpm::io::MaterialSpec soil = mohr_coulomb(0, rho, 1e6, 0.23, phi, c, 0.0);
+  mpm::MaterialSpec soil = mohr_coulomb(0, rho, 1e6, 0.23, phi, c, 0.0);
   soil.tension_cutoff = c / std::tan(phi * std::acos(-1.0) / 180.0);
   soil.separation_volume_ratio = separation_ratio;
   Deck deck;
@@ -42,15 +42,15 @@ Extension pull_apart(double separation_ratio) {
     deck.velocity_constraints.push_back(
         {nodes_where(deck.grid, [&](double, double yn) { return std::abs(yn - x) < 1e-9; }), 1, rate * x});
   }
-  deck.analysis.transfer = mpm::io::Transfer::PIC;
+  deck.analysis.transfer = mpm::Transfer::PIC;
   deck.analysis.velocity_update = true;
   deck.analysis.dt = 1e-3;
   mpm::core::Simulation sim(deck, 1);
   Extension e;
-  const auto largest_stress = [](const mpm::io::ParticleRecord& p) {
+  const auto largest_stress = [](const mpm::ParticleRecord& p) {
     return std::max({std::abs(p.stress_xx), std::abs(p.stress_yy), std::abs(p.stress_zz), std::abs(p.tau_xy)});
   };
-  const double t_check = 0.9 * std::log(mpm::io::kDefaultSeparationVolumeRatio) / (2 * rate);
+  const double t_check = 0.9 * std::log(mpm::kDefaultSeparationVolumeRatio) / (2 * rate);
   const double t_end = std::log(4.0) / (2 * rate);  // V / V0 = 4
   bool checked = false;
   while (sim.time() < t_end - 1e-12) {
@@ -73,10 +73,10 @@ Extension pull_apart(double separation_ratio) {
 }
 
 TEST(Separation, APulledApartParticleCarriesNoStressBeyondTheRatio) {
-  const Extension e = pull_apart(mpm::io::kDefaultSeparationVolumeRatio);
+  const Extension e = pull_apart(mpm::kDefaultSeparationVolumeRatio);
   // V / V0 = exp(2 r t) (the stepwise product of 1 + 2 r dt, to 1e-3 over these steps)
   EXPECT_NEAR(e.ratio_last, 4.0, 4e-3);
-  EXPECT_LT(e.ratio_first, mpm::io::kDefaultSeparationVolumeRatio);
+  EXPECT_LT(e.ratio_first, mpm::kDefaultSeparationVolumeRatio);
   EXPECT_NEAR(e.tension_first, 100 / std::tan(22.2 * std::acos(-1.0) / 180.0), 1.0);  // at the apex
   EXPECT_EQ(e.stress_last, 0.0);
 }

@@ -22,7 +22,7 @@
 namespace {
 
 using namespace mpm_test;
-using mpm::io::Scheme;
+using mpm::Scheme;
 
 constexpr double kG = 9.81;
 
@@ -50,7 +50,7 @@ MeanMotion slide(SlidingBlockSpec spec, Scheme scheme, Transfer transfer, double
   deck.analysis.scheme = scheme;
   deck.analysis.velocity_update = transfer.pic;
   deck.analysis.pic_blend = transfer.blend;
-  deck.analysis.transfer = transfer.apic ? mpm::io::Transfer::APIC : mpm::io::Transfer::FLIP;
+  deck.analysis.transfer = transfer.apic ? mpm::Transfer::APIC : mpm::Transfer::FLIP;
   deck.analysis.cfl = 0.4;
   deck.analysis.dt = 1.0;
   mpm::core::Simulation sim(deck, 1);

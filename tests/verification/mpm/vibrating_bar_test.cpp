@@ -11,12 +11,12 @@ namespace {
 
 using namespace mpm_test;
 
-VibratingBar::Errors run_bar(int cells, mpm::io::Scheme scheme, CellType type) {
+VibratingBar::Errors run_bar(int cells, mpm::Scheme scheme, CellType type) {
   return VibratingBar::run(VibratingBar::deck(cells, scheme, type));
 }
 
 TEST(VibratingBar, PeriodAndAmplitudeMatchTheFirstMode) {
-  for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+  for (auto scheme : {mpm::Scheme::USF, mpm::Scheme::USL, mpm::Scheme::MUSL}) {
     for (auto type : {CellType::Linear4, CellType::Gimp16}) {
       const auto r = run_bar(50, scheme, type);
       SCOPED_TRACE(testing::Message() << "scheme " << static_cast<int>(scheme) << " cell type " << static_cast<int>(type));
@@ -34,7 +34,7 @@ TEST(VibratingBar, FreeEndCrossesIntoTheEmptyCell) {
   // 20 % (measured 1-2 % and 13-16 % for USF, USL and MUSL alike): the grid-crossing error of linear
   // shape functions (Bardenhagen & Kober 2004, CMES 5, section 1), not an instability.
   constexpr double kV0 = 0.3;
-  for (auto scheme : {mpm::io::Scheme::USF, mpm::io::Scheme::USL, mpm::io::Scheme::MUSL}) {
+  for (auto scheme : {mpm::Scheme::USF, mpm::Scheme::USL, mpm::Scheme::MUSL}) {
     for (auto type : {CellType::Linear4, CellType::Gimp16}) {
       SCOPED_TRACE(testing::Message() << "scheme " << static_cast<int>(scheme) << " cell type " << static_cast<int>(type));
       Deck deck = VibratingBar::deck(50, scheme, type);
@@ -49,9 +49,9 @@ TEST(VibratingBar, FreeEndCrossesIntoTheEmptyCell) {
 }
 
 TEST(VibratingBar, ErrorShrinksWithRefinement) {
-  const auto coarse = run_bar(10, mpm::io::Scheme::MUSL, CellType::Linear4);
-  const auto medium = run_bar(20, mpm::io::Scheme::MUSL, CellType::Linear4);
-  const auto fine = run_bar(40, mpm::io::Scheme::MUSL, CellType::Linear4);
+  const auto coarse = run_bar(10, mpm::Scheme::MUSL, CellType::Linear4);
+  const auto medium = run_bar(20, mpm::Scheme::MUSL, CellType::Linear4);
+  const auto fine = run_bar(40, mpm::Scheme::MUSL, CellType::Linear4);
   std::printf("period error: %.3e (10 cells) %.3e (20) %.3e (40); amplitude error %.3e %.3e %.3e\n",
               coarse.period, medium.period, fine.period, coarse.amplitude, medium.amplitude, fine.amplitude);
   EXPECT_LT(medium.period, coarse.period);

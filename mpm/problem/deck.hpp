@@ -1,7 +1,8 @@
 #pragma once
-// A parsed MPM input deck: what mpm/io reads from a CB-Geo-style mpm.json (+ mesh, particles, entity
-// sets, stresses, or the resume HDF5 file) and what mpm/core builds a simulation from. Plain data, SI
-// units, angles in radians, everything already validated by the reader (the core only asserts).
+// The description of a problem: what mpm/io fills from a CB-Geo-style mpm.json (+ mesh, particles, entity
+// sets, stresses, or the resume HDF5 file) and what mpm/core builds a simulation from; neither library
+// includes the other's headers for it. Plain data, SI units, angles in radians, everything already validated
+// by the reader (the core only asserts).
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
@@ -11,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "mpm/io/math_functions.hpp"
-#include "mpm/io/particle_table.hpp"
+#include "mpm/problem/math_function.hpp"
+#include "mpm/problem/particle_record.hpp"
 
-namespace mpm::io {
+namespace mpm {
 
 enum class CellType { Linear4 /* ED2Q4 */, Gimp16 /* ED2Q16G */ };
 enum class Scheme { USF, USL, MUSL };
@@ -166,4 +167,4 @@ struct Deck {
   std::vector<std::string> warnings;  ///< things the reader accepted but the user should know (printed by main)
 };
 
-}  // namespace mpm::io
+}  // namespace mpm
