@@ -148,6 +148,7 @@ struct ResumeSpec {
 
 void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string& uuid) {
   const std::string type = a.string("type");
+  if (type == "MPMExplicit3D") a.fail("type", "MPMExplicit3D: this mpm runs 2D analyses only (expected MPMExplicit2D)");
   if (type != "MPMExplicit2D") a.fail("type", "unsupported analysis \"" + type + "\" (expected MPMExplicit2D)");
   Analysis& an = deck.analysis;
   // CB-Geo's current key is mpm_scheme; older decks call it stress_update. Never a silent default.
@@ -552,6 +553,8 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   CellType type = CellType::Linear4;
   if (cell_type == "ED2Q4") type = CellType::Linear4;
   else if (cell_type == "ED2Q16G") type = CellType::Gimp16;
+  else if (cell_type == "ED3H8" || cell_type == "ED3H64G")
+    mesh.fail("cell_type", "a 3D cell type (\"" + cell_type + "\") in a 2D analysis (expected ED2Q4 or ED2Q16G)");
   else mesh.fail("cell_type", "unsupported cell type \"" + cell_type + "\" (expected ED2Q4 or ED2Q16G)");
   Lattice lattice;
   std::map<std::string, std::vector<int>> named_sets;
@@ -618,6 +621,11 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
                                              ") is outside the grid's cells");
       if (!(p.mass > 0) || !(p.volume > 0))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": mass and volume must be > 0");
+      // CB-Geo's 2D tables hold z = 0 (coordinate, displacement, velocity, size); a 3D table's particles do not.
+      if (p.coord_z != 0 || p.displacement_z != 0 || p.velocity_z != 0 || p.nsize_z != 0)
+        throw common::InputError(rshown, "particle " + std::to_string(p.id) + " has a z coordinate, displacement, velocity or size (z " +
+                                             num(p.coord_z) + ", nsize_z " + num(p.nsize_z) +
+                                             "): a 3D particle table on a 2D deck (MPMExplicit2D reads x and y)");
     }
     read_resume_extras(file, shown, rshown, deck);
     sort_by_id(deck);

@@ -343,6 +343,41 @@ TEST(DeckReaderErrors, UnknownSchemeIsNotSilentlyUsf) {
   EXPECT_MESSAGE_HAS(d.error(), "analysis.mpm_scheme: unknown scheme \"usx\"");
 }
 
+// Issue 37's bad input: CB-Geo's 3D decks and particle tables on this 2D reader are one line naming the key or
+// the file, never read as 2D.
+TEST(DeckReaderErrors, ThreeDimensionalDecksAndCellsAreNamed) {
+  SmallDeck analysis("mpm3d");
+  analysis.deck["analysis"]["type"] = "MPMExplicit3D";
+  EXPECT_MESSAGE_HAS(analysis.error(), "analysis.type: MPMExplicit3D: this mpm runs 2D analyses only");
+  for (const char* cell : {"ED3H8", "ED3H64G"}) {
+    SmallDeck d(std::string("cell_") + cell);
+    d.deck["mesh"]["cell_type"] = cell;
+    EXPECT_MESSAGE_HAS(d.error(), std::string("mesh.cell_type: a 3D cell type (\"") + cell + "\") in a 2D analysis");
+  }
+}
+
+TEST(DeckReaderErrors, AThreeDimensionalParticleTableOnATwoDimensionalDeck) {
+  const auto dir = test_support::fresh_scratch_folder("geoflow_deck_reader", "resume_3d_table");
+  std::filesystem::copy(kCbgeo / "resume_from_h5", dir, std::filesystem::copy_options::recursive);
+  const auto file = dir / "results/bar_resume/particles000.h5";
+  auto table = mpm::io::read_particle_table(file);
+  ASSERT_NO_THROW(mpm::io::read_deck(dir, "mpm.json"));  // CB-Geo's 2D table: z = 0 throughout
+  ASSERT_GE(table.size(), 2u);
+  table[1].coord_z = 0.25;  // as CB-Geo's 3D tables hold them
+  table[1].nsize_z = 0.5;
+  std::filesystem::remove(file);
+  mpm::io::write_particle_table(file, table);
+  try {
+    mpm::io::read_deck(dir, "mpm.json");
+    ADD_FAILURE() << "a 3D table was read as 2D";
+  } catch (const common::InputError& e) {
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "particles000.h5");
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "particle " + std::to_string(table[1].id) + " has a z coordinate");
+    EXPECT_MESSAGE_HAS(std::string(e.what()), "a 3D particle table on a 2D deck");
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(DeckReaderErrors, UndefinedMaterialId) {
   SmallDeck d("material_id");
   d.deck["particles"][0]["generator"]["material_id"] = 3;
