@@ -269,32 +269,31 @@ if {[getTime] != 1.0} { error "time [getTime]" }
 )tcl"), "");
 }
 
+/// One PM4Silt element, all its nodes fixed, never loaded (zero effective stress), in its plastic stage;
+/// `su` is the material's S_u argument (0: S_u = Su_Rat sigma'yy at FirstCall).
+std::string unconsolidated_pm4silt(const std::string& su) {
+  return R"tcl(
+model basic -ndm 2 -ndf 2
+node 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1
+fix 1 1 1; fix 2 1 1; fix 3 1 1; fix 4 1 1
+nDMaterial PM4Silt 1 )tcl" + su + R"tcl( 0.25 500.0 4.0 1.7
+element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
+updateMaterialStage -material 1 -stage 1
+)tcl";
+}
+
 TEST(TclCommands, PM4SiltFirstCallWithoutEffectiveStressIsAnError) {
   // S_u = Su_Rat sigma'yy at FirstCall: at zero effective stress OpenSees takes the log of p_cs = 0 and every
   // stress after it is NaN (the fuzz case above, in its PM4Silt form). One line naming the material.
   Interpreter interp;
-  ASSERT_EQ(error_of(interp, R"tcl(
-model basic -ndm 2 -ndf 2
-node 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1
-fix 1 1 1; fix 2 1 1; fix 3 1 1; fix 4 1 1
-nDMaterial PM4Silt 1 0.0 0.25 500.0 4.0 1.7
-element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
-updateMaterialStage -material 1 -stage 1
-)tcl"), "");
+  ASSERT_EQ(error_of(interp, unconsolidated_pm4silt("0.0")), "");
   const std::string e = error_of(interp, "setParameter -val 0 -ele 1 FirstCall 1");
   EXPECT_NE(e.find("nDMaterial PM4Silt 1"), std::string::npos) << e;
   EXPECT_NE(e.find("needs a compressive vertical effective stress"), std::string::npos) << e;
   // With S_u given, the same unconsolidated element initialises.
   Interpreter given;
-  ASSERT_EQ(error_of(given, R"tcl(
-model basic -ndm 2 -ndf 2
-node 1 0 0; node 2 1 0; node 3 1 1; node 4 0 1
-fix 1 1 1; fix 2 1 1; fix 3 1 1; fix 4 1 1
-nDMaterial PM4Silt 1 1.0 0.25 500.0 4.0 1.7
-element SSPquad 1 1 2 3 4 1 PlaneStrain 1.0
-updateMaterialStage -material 1 -stage 1
-setParameter -val 0 -ele 1 FirstCall 1
-)tcl"), "");
+  ASSERT_EQ(error_of(given, unconsolidated_pm4silt("1.0")), "");
+  EXPECT_EQ(error_of(given, "setParameter -val 0 -ele 1 FirstCall 1"), "");
 }
 
 TEST(TclCommands, VariableTransientAnalyzeNeedsDtMinDtMaxAndJd) {
