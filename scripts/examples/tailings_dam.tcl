@@ -15,7 +15,8 @@
 #     the upstream side impermeable; u-p elements (SSPquadUP) everywhere;
 #   - gravity in the materials' elastic stage with the permeabilities raised 1000 times (consolidated in a few
 #     large steps, as OpenSees modellers do), the plastic stage with FirstCall, the real permeabilities, then
-#     seeded synthetic outcrop record (scripts/shaken_slope/motion, PGA 0.40 g) times -scale: -base rigid
+#     seeded synthetic outcrop record (scripts/shaken_slope/motion, PGA 0.40 g) times -scale (0.5; a record
+#     given with -accel or -motion is applied as given, -scale 1, unless -scale says otherwise): -base rigid
 #     (default: the base fixed and shaken with the acceleration -accel, UniformExcitation, the sides on rollers)
 #     or -base compliant (a Lysmer dashpot and the Joyner-Chen force of the velocity -motion; the sides tied
 #     horizontally to the base). -motion-dt is the records' time step (scripts/motion_suite.py passes its own).
@@ -33,18 +34,25 @@
 #
 # Factor of safety: none (PM4Sand has no strength for strengthReduction to reduce; the dam is built to liquefy)
 #
-# Usage: fem_tcl tailings_dam.tcl <outdir> ?-cell 4? ?-tend 12? ?-dt 0.005? ?-record 0.1? ?-scale 0.5? ?-Drt 0.3?
+# Usage: fem_tcl tailings_dam.tcl <outdir> ?-cell 4? ?-tend 12? ?-dt 0.005? ?-record 0.1? ?-scale 0.5 (1 with -accel or -motion)? ?-Drt 0.3?
 #        ?-Drd 0.6? ?-base rigid|compliant? ?-accel FILE? ?-motion FILE? ?-motion-dt 0.01?
 # -cell must divide 4 (4 or 2 m: the dam's base nodes then fall on the foundation's top nodes; 2 m takes about
 # four times as long).
 source [file join [file dirname [info script]] hybrid_stages.tcl]
-set usage "usage: fem_tcl tailings_dam.tcl <outdir> ?-cell 4? ?-tend 12? ?-dt 0.005? ?-record 0.1? ?-scale 0.5? ?-Drt 0.3? ?-Drd 0.6? ?-base rigid|compliant? ?-accel FILE? ?-motion FILE? ?-motion-dt 0.01?"
+set usage "usage: fem_tcl tailings_dam.tcl <outdir> ?-cell 4? ?-tend 12? ?-dt 0.005? ?-record 0.1? ?-scale 0.5 (1 with -accel or -motion)? ?-Drt 0.3? ?-Drd 0.6? ?-base rigid|compliant? ?-accel FILE? ?-motion FILE? ?-motion-dt 0.01?"
 set motion_dir [file normalize [file join [file dirname [info script]] .. shaken_slope motion]]
 if {$argc < 1 || [string index [lindex $argv 0] 0] eq "-"} { error "tailings_dam.tcl: missing <outdir>; $usage" }
 set outdir [lindex $argv 0]
-array set opt [list -cell 4.0 -tend 12.0 -dt 0.005 -record 0.1 -scale 0.5 -Drt 0.3 -Drd 0.6 \
+array set opt [list -cell 4.0 -tend 12.0 -dt 0.005 -record 0.1 -scale default -Drt 0.3 -Drd 0.6 \
     -base rigid -accel [file join $motion_dir accel.txt] -motion [file join $motion_dir vel.txt] -motion-dt 0.01]
 parse_options tailings_dam.tcl opt [lrange $argv 1 end]
+# -scale: 0.5 on the project's record (0.40 g -> 0.20 g), 1 on a record given with -accel or -motion (a record
+# is applied as given: scripts/motion_suite.py hands over the motion it has scaled itself)
+if {$opt(-scale) eq "default"} {
+    set own [expr {[lsearch -exact [lrange $argv 1 end] -accel] >= 0 || [lsearch -exact [lrange $argv 1 end] -motion] >= 0}]
+    set opt(-scale) [expr {$own ? 1.0 : 0.5}]
+}
+if {![string is double -strict $opt(-scale)] || $opt(-scale) < 0} { error "tailings_dam.tcl: -scale must be a number >= 0, got '$opt(-scale)'" }
 if {$opt(-base) ni {rigid compliant}} { error "tailings_dam.tcl: -base must be rigid or compliant, got '$opt(-base)'" }
 foreach key {-accel -motion} {
     if {![file readable $opt($key)]} { error "tailings_dam.tcl: $key '$opt($key)': no such readable file" }
