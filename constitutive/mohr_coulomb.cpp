@@ -376,6 +376,14 @@ CPU_VARIANTS MohrCoulombUpdate MohrCoulombReturnMap::apply_plastic(const PlaneSt
   return plastic_return(trial, decompose(trial), d.elasticity, d.planes, d.solves.data());
 }
 
+PrincipalUpdate MohrCoulombReturnMap::apply_principal(const Eigen::Vector3d& sorted_trial) const {
+  const Data& d = *data_;
+  if (inside(sorted_trial, d.surface.sin_phi, d.surface.cos_phi, d.surface.strength, d.planes.tension))
+    return {sorted_trial, ReturnRegion::Elastic};
+  const PrincipalResult pr = principal_return(d.planes, sorted_trial, d.elasticity.shear_modulus, d.solves.data());
+  return {pr.stress, pr.region};
+}
+
 MohrCoulombUpdate MohrCoulombReturnMap::apply(const PlaneStrainStress& trial) const {
   if (admits(trial)) return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
   return apply_plastic(trial);

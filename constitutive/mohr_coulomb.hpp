@@ -75,6 +75,12 @@ enum class ReturnRegion : std::uint8_t {
 
 const char* to_string(ReturnRegion region);
 
+/// The return in sorted principal space: the returned principal values (s1 >= s2 >= s3) and the region.
+struct PrincipalUpdate {
+  Eigen::Vector3d stress;
+  ReturnRegion region;
+};
+
 struct MohrCoulombUpdate {
   PlaneStrainStress stress;                  ///< updated stress (sxx, syy, szz, sxy)
   Eigen::Vector4d plastic_strain_increment;  ///< (dexx, deyy, dezz, dgxy) plastic, engineering shear
@@ -204,6 +210,9 @@ class MohrCoulombReturnMap {
   bool admits_at_round_off(const PrincipalExtremes& t) const;
   /// apply() for a trial that admits() refused (the elastic test is not repeated).
   MohrCoulombUpdate apply_plastic(const PlaneStrainStress& trial_stress) const;
+  /// The return in sorted principal space, which plane strain and 3D share (mohr_coulomb_3d.hpp): the
+  /// trial's principal values s1 >= s2 >= s3 in, the returned ones and the region out (Elastic: unchanged).
+  PrincipalUpdate apply_principal(const Eigen::Vector3d& sorted_trial) const;
   const MohrCoulombSurface& surface() const;
   const IsotropicElasticity& elasticity() const;
 
