@@ -1,15 +1,23 @@
 #include "constitutive/mohr_coulomb_3d.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 namespace constitutive {
 
-PrincipalStresses principal_stresses(const Stress6& s) {
+namespace {
+Eigen::Matrix3d as_tensor(const Stress6& s) {
   Eigen::Matrix3d m;
   m << s[0], s[3], s[5],  //
       s[3], s[1], s[4],   //
       s[5], s[4], s[2];
+  return m;
+}
+}  // namespace
+
+PrincipalStresses principal_stresses(const Stress6& s) {
+  const Eigen::Matrix3d m = as_tensor(s);
   // Householder tridiagonalisation + implicit QR: accurate where eigenvalues (nearly) repeat, which the
   // closed-form (trigonometric) solution is not, and the edges of the pyramid are exactly there.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
@@ -27,6 +35,17 @@ Stress6 on_principal_axes(const Eigen::Matrix3d& axes, const Eigen::Vector3d& va
 }
 
 MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial, const MohrCoulombReturnMap& map) {
+  // Most points are elastic: their test takes the eigenvalues alone, in closed form (the trigonometric
+  // solution, ~4x cheaper than the iterative one), and passes only with a margin of 1e-10 of the stress
+  // scale, far above that solution's round-off; a point nearer the surface takes the accurate path below.
+  {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> direct;
+    direct.computeDirect(as_tensor(trial), Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d& v = direct.eigenvalues();  // ascending
+    const double margin = 1e-10 * std::max(v.cwiseAbs().maxCoeff(), map.surface().strength.cohesion);
+    if (map.strictly_admits(Extremes<double>{v[2] + margin, v[0] - margin}))
+      return {trial, Strain6::Zero(), ReturnRegion::Elastic};
+  }
   const PrincipalStresses p = principal_stresses(trial);
   const PrincipalUpdate pu = map.apply_principal(p.sorted);
   if (pu.region == ReturnRegion::Elastic) return {trial, Strain6::Zero(), ReturnRegion::Elastic};
