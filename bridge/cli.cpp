@@ -18,6 +18,7 @@
 #include "bridge/fem_state_reader.hpp"
 #include "bridge/liquefaction_report.hpp"
 #include "bridge/liquefied_strength.hpp"
+#include "bridge/material_exclusion.hpp"
 #include "bridge/mpm_deck.hpp"
 #include "bridge/nodal_loads.hpp"
 #include "bridge/particle_mapping.hpp"
@@ -47,6 +48,7 @@ struct CliOptions {
   std::string volume_split = "jacobian";
   std::string cell_type = "ED2Q16G";
   std::vector<std::string> material;           ///< --material NAME:key=value,... (per FEM material)
+  std::vector<std::string> exclude_material;   ///< --exclude-material NAME[,NAME...]
   /// Unset: from the FEM supports in the model file, else roller, roller, friction.
   std::optional<std::string> left_wall, right_wall, base;
   bool ignore_supports = false;
@@ -89,6 +91,11 @@ Base parse_base(const std::string& s) {
 }
 
 std::string fmt(double v, int precision = 6) { return common::number_text(v, precision); }
+std::string comma_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
 
 std::string relative_change(double before, double after) {
   if (before == 0) return after == 0 ? "0" : "n/a";
@@ -248,6 +255,14 @@ int run(const CliOptions& o, const CLI::App& app, std::ostream& out, std::ostrea
   // 1. Read and check everything (no output yet).
   const FemModel model = read_fem_model(o.model);
   AssembledState assembled = read_fem_state(model, ro);
+  std::optional<ExcludedMaterials> excluded;
+  if (!o.exclude_material.empty()) {
+    excluded = exclude_materials(assembled.state, o.exclude_material, "--exclude-material");
+    assembled.notes.push_back("--exclude-material: " + std::to_string(excluded->elements) + " elements of FEM material(s) " +
+                              comma_list(excluded->names) + " (" + fmt(excluded->mass, 6) + " kg/m) not carried into MPM; their top at y = " +
+                              fmt(excluded->top, 6) + " m" + (o.deck.base_y ? ", the MPM base at y = " + fmt(*o.deck.base_y, 6) + " m"
+                                                                              : " (the MPM base stays where the options put it: give --base-y to put it there)"));
+  }
   const ExtractedBoundaries supports = o.ignore_supports ? ExtractedBoundaries{} : extract_boundaries(model);
   const BoundaryOptionsGiven given{o.left_wall.has_value(), o.right_wall.has_value(), o.base.has_value(), o.deck.base_y.has_value()};
   const std::vector<BoundaryChoice> boundaries = apply_supports(supports, given, deck);
@@ -369,6 +384,9 @@ int run(const CliOptions& o, const CLI::App& app, std::ostream& out, std::ostrea
                                {"max_element", report.stress_max_element}};
     rj["min_jacobian"] = {{"value", report.min_jacobian}, {"element", report.min_jacobian_element}};
     rj["particle_file"] = d.particle_file;
+    if (excluded)
+      rj["excluded_materials"] = {{"materials", excluded->names}, {"elements", excluded->elements},
+                                  {"mass_kg_per_m", excluded->mass}, {"top_y", excluded->top}};
     rj["notes"] = assembled.notes;
     rj["warnings"] = warnings;
     rj["boundaries"] = boundaries_json(boundaries, d);
@@ -452,6 +470,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
   app.add_option("--cohesion", o.cohesion, "cohesion")->group("Material (FEM units; override the model file)");
   app.add_option("--psi", o.psi, "dilation angle, degrees (default 0)")->group("Material (FEM units; override the model file)");
   app.add_option("--tension", o.tension, "tension cutoff (default: the Mohr-Coulomb apex, c cot(phi))")->group("Material (FEM units; override the model file)");
+  app.add_option("--exclude-material", o.exclude_material,
+                 "FEM materials (their tags in the model file) not carried into MPM, e.g. a stiff foundation that does not "
+                 "flow: its particles would cost every step and its P-wave speed would set the time step; put the MPM base at "
+                 "its top with --base-y (the report gives the top and the mass left out)")
+      ->delimiter(',')->group("Material (FEM units; override the model file)");
   app.add_option("--material", o.material, "per FEM material (its tag in the model file), after the options above: NAME:key=value[,key=value...], keys type (elastic|mohr-coulomb), E, nu, density, phi, cohesion, psi, tension; repeatable, e.g. --material 2:phi=30,cohesion=5")->group("Material (FEM units; override the model file)");
   app.add_option("--gravity", o.gravity, "gravity, m/s2, acting in -y (default: from the elements' body forces / density, else 9.81)")->group("Material (FEM units; override the model file)");
   // Mapping.

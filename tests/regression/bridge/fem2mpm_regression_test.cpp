@@ -470,6 +470,43 @@ TEST(Fem2mpmRegression, LayeredSlopeKeepsItsSupportsThroughTheChain) {
   }
   EXPECT_LT(far_field, 1e-3);
   EXPECT_GT(slope, 0.05);
+
+  // The foundation left out (--exclude-material 1) with the base at its top (--base-y 5): the slope's
+  // particles alone (50 elements x 4), its material alone, the report naming what was left out (100
+  // elements, rho x area = 2000 x 100 kg/m, top y = 5 less its settlement), a longer time step (the slope's P-wave speed, not
+  // the stiffer foundation's), and in MPM the slope slides on the base without crossing it.
+  const fs::path bare = dir / "deck_without_foundation";
+  const Result rx = run("--model " + (dir / "model.json").string() + " --disp " + (dir / "disp.out").string() + " --vel " +
+                            (dir / "vel.out").string() + " --stress " + (dir / "stress.out").string() +
+                            " --units kN --ppd 2 --duration 0.3 --exclude-material 1 --base-y 5 --out " + bare.string(),
+                        dir);
+  ASSERT_EQ(rx.code, 0) << rx.err;
+  const auto bare_report = nlohmann::json::parse(slurp(bare / "report.json"));
+  EXPECT_EQ(bare_report["excluded_materials"]["elements"].get<int>(), 100);
+  EXPECT_CLOSE(bare_report["excluded_materials"]["mass_kg_per_m"].get<double>(), 2.0e5, 0.0, 1e-9);
+  EXPECT_CLOSE(bare_report["excluded_materials"]["top_y"].get<double>(), 5.0, 1e-2, 0.0);  // settled 3.5 mm
+  EXPECT_CLOSE(bare_report["fem"]["mass"].get<double>(), 1900.0 * 37.5, 0.0, 1e-9);  // the slope: 50 trapezoids, 37.5 m2
+  const auto bare_deck = nlohmann::json::parse(slurp(bare / "mpm.json"));
+  ASSERT_EQ(bare_deck["materials"].size(), 1u);
+  EXPECT_EQ(bare_deck["materials"][0]["friction"].get<double>(), 20.0);
+  EXPECT_GT(bare_deck["analysis"]["dt"].get<double>(), 1.4 * mpm_deck["analysis"]["dt"].get<double>());  // c_p 50 -> 20 MPa: x 1.58
+  const long long bare_steps = bare_deck["analysis"]["nsteps"].get<long long>();
+  const auto bare_start = mpm::io::read_particle_table(bare / "results/column" / mpm::io::particle_file_name(0, bare_steps));
+  ASSERT_EQ(bare_start.size(), 200u);
+  for (const auto& p : bare_start) EXPECT_GT(p.coord_y, 5.0) << "particle " << p.id;
+  ASSERT_EQ(std::system((mpm.string() + " -f " + bare.string() + "/ -i mpm.json > " + (dir / "mpm_bare.txt").string() + " 2>&1").c_str()), 0)
+      << slurp(dir / "mpm_bare.txt");
+  const long long every = bare_deck["post_processing"]["output_steps"].get<long long>();
+  const auto bare_end = mpm::io::read_particle_table(bare / "results/column" /
+                                                     mpm::io::particle_file_name((bare_steps - 1) / every * every, bare_steps));
+  ASSERT_EQ(bare_end.size(), 200u);
+  double bare_slope = 0;
+  for (const auto& a : bare_end) {
+    const auto& b = bare_start[static_cast<std::size_t>(a.id)];
+    EXPECT_GE(a.coord_y, 5.0) << "particle " << a.id << " went below the base";
+    bare_slope = std::max(bare_slope, std::hypot(a.coord_x - b.coord_x, a.coord_y - b.coord_y));
+  }
+  EXPECT_GT(bare_slope, 0.05);
 }
 
 // A triangle mesh through the chain: tri31_column.tcl (40 Tri31, an elastic 10 m column at rest under its
