@@ -3,14 +3,15 @@
 the records' intensity measures, and what each record did: liquefied depth, runout, moved mass.
 
     scripts/motion_suite.py MODEL.tcl [--records DIR] [--pga LIST] --out DIR --transfer T|T1,T2,.. [--duration D]
-                            [--jobs N] [--scale S | --scale-to-pga G] [--seed N] [--input velocity|acceleration]
+                            [--jobs N] [--scale S | --scale-to-pga G] [--seed N[,N...]] [--input velocity|acceleration]
                             [--window-depth 10] [--window-min-ratio 0.5] [--bin DIR] [--ims-only]
                             [hybrid_run / fem2mpm options...] [-- script arguments...]
 
 Records: every PEER NGA `.AT2` file in --records DIR (acceleration in g, as downloaded from the PEER ground
 motion database; times --scale, or each scaled to the PGA --scale-to-pga in g), and the project's seeded
 synthetic record (scripts/shaken_slope/ground_motion.py: Kanai-Tajimi / Clough-Penzien filtered noise in a
-Saragoni-Hart envelope, dt 0.01 s, 12 s, --seed) at each PGA of --pga (g, comma-separated). Each record is
+Saragoni-Hart envelope, dt 0.01 s, 12 s) for each seed of --seed and each PGA of --pga (g, comma-separated:
+5 PGAs and 6 seeds make a suite of 30 independent records). Each record is
 baseline-corrected (geoflow/records.py: a + c0 + c1 t so that it ends at rest with zero displacement, the
 correction of ground_motion.py) and integrated (trapezoidal) to the velocity. A malformed .AT2 file (a bad
 header, NPTS that disagrees with the data, a token that is not a number) stops everything before any run:
@@ -132,7 +133,8 @@ def parser():
     ap.add_argument("--duration", type=float, default=5.0, help="MPM time after the transfer, s (default 5)")
     ap.add_argument("--scale", type=float, default=None, help="factor on the .AT2 records (default 1)")
     ap.add_argument("--scale-to-pga", type=float, default=None, help="scale each .AT2 record to this PGA, g")
-    ap.add_argument("--seed", type=int, default=None, help="seed of the synthetic records (default ground_motion.py's)")
+    ap.add_argument("--seed", type=int_list, default=None,
+                    help="seeds of the synthetic records, comma-separated: one record per seed and PGA (default ground_motion.py's)")
     ap.add_argument("--input", choices=("velocity", "acceleration"), default="velocity",
                     help="what the script gets: -motion VEL -motion-dt DT (default) or -accel ACC -motion-dt DT")
     ap.add_argument("--window-depth", type=float, default=10.0, help="window rule: liquefied depth that opens it, m")
@@ -150,6 +152,16 @@ def float_list(text):
         raise argparse.ArgumentTypeError("expected comma-separated numbers, got %r" % text)
     if not v or not all(math.isfinite(x) and x > 0 for x in v):
         raise argparse.ArgumentTypeError("expected values > 0, got %r" % text)
+    return v
+
+
+def int_list(text):
+    try:
+        v = [int(w) for w in text.split(",") if w.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected comma-separated integers, got %r" % text)
+    if not v or len(set(v)) != len(v):
+        raise argparse.ArgumentTypeError("expected distinct integers, got %r" % text)
     return v
 
 
@@ -208,8 +220,7 @@ def collect_records(args):
                         "correction": [c * scale for c in corr]})
     if args.pga:
         import ground_motion
-        seed = args.seed if args.seed is not None else ground_motion.DEFAULTS["seed"]
-        for pga in args.pga:
+        for seed, pga in [(seed, pga) for seed in (args.seed or [ground_motion.DEFAULTS["seed"]]) for pga in args.pga]:
             p = dict(ground_motion.DEFAULTS, seed=seed, pga=pga)
             _, a = ground_motion.generate(p)
             a, corr = records.baseline_correct(a, p["dt"])

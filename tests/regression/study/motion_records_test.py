@@ -17,7 +17,8 @@
 - the liquefied depth of a transfer file with a /pore_pressure dataset (a block of particles, the lower left
   quarter liquefied: depth from the ground surface to the deepest liquefied particle) and of a dry one (n/a);
   the window rule on made-up transfer rows;
-- motion_suite.py --ims-only: summary.csv with the records' intensity measures (a synthetic PGA exactly).
+- motion_suite.py --ims-only: summary.csv with the records' intensity measures (a synthetic PGA exactly); with
+  several seeds one record per seed and PGA (--seed 5,5 is one line, exit 2).
 """
 import argparse
 import csv
@@ -148,6 +149,26 @@ def main():
         c.expect("--ims-only: summary.csv with 3 records, the synthetic one at PGA 0.25 g", ok and len(rows) == 3 and len(syn) == 1
                  and abs(float(syn[0]["pga_g"]) - 0.25) < 1e-9 and float(syn[0]["masi_g_s"]) > 0,
                  "exit %d %s" % (r.returncode, r.stderr.strip()[-300:]))
+        # ---- several seeds: one record per seed and PGA, each at its PGA exactly, the seeds' records different
+        out = os.path.join(tmp, "seeds")
+        r = subprocess.run([sys.executable, os.path.join(a.repo, "scripts", "motion_suite.py"), model, "--pga", "0.2,0.3",
+                            "--seed", "5,6", "--out", out, "--ims-only"], capture_output=True, text=True)
+        rows = list(csv.DictReader(open(os.path.join(out, "summary.csv")))) if r.returncode == 0 else []
+        names = sorted(row["record"] for row in rows)
+        c.expect("--seed 5,6 --pga 0.2,0.3: four records, one per seed and PGA",
+                 names == ["synthetic_pga0.2_seed5", "synthetic_pga0.2_seed6", "synthetic_pga0.3_seed5", "synthetic_pga0.3_seed6"],
+                 "exit %d %s %s" % (r.returncode, names, r.stderr.strip()[-300:]))
+        by = {row["record"]: row for row in rows}
+        if len(by) == 4:
+            c.expect("each at its PGA; two seeds give two records (Arias intensities differ)",
+                     all(abs(float(by["synthetic_pga%s_seed%d" % (p, s)]["pga_g"]) - float(p)) < 1e-9
+                         for p in ("0.2", "0.3") for s in (5, 6))
+                     and float(by["synthetic_pga0.2_seed5"]["arias_m_s"]) != float(by["synthetic_pga0.2_seed6"]["arias_m_s"]),
+                     str([(k, v["pga_g"], v["arias_m_s"]) for k, v in sorted(by.items())]))
+        r = subprocess.run([sys.executable, os.path.join(a.repo, "scripts", "motion_suite.py"), model, "--pga", "0.2",
+                            "--seed", "5,5", "--out", os.path.join(tmp, "bad_seeds"), "--ims-only"], capture_output=True, text=True)
+        c.expect("--seed 5,5: one line naming --seed, exit 2", r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
+                 and "--seed" in r.stderr and not os.path.exists(os.path.join(tmp, "bad_seeds")), r.stderr.strip())
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     return c.exit_status()
