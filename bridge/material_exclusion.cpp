@@ -32,13 +32,10 @@ ExcludedMaterials exclude_materials(TransferState& state, const std::vector<std:
     materials.back().id = new_index[m];
   }
   // The kept elements with every per-Gauss-point field (as split_triangles renumbers them).
-  std::vector<TransferElement> elements;
-  std::vector<Stress6> stress, reference_stress;
-  std::vector<double> shear_strain;
-  const bool has_reference = !state.reference_gauss_stress.empty(), has_strain = !state.gauss_shear_strain.empty();
+  RenumberedElements kept(state);
   out.top = -std::numeric_limits<double>::infinity();
   for (std::size_t e = 0; e < state.elements.size(); ++e) {
-    const TransferElement& el = state.elements[e];
+    TransferElement el = state.elements[e];
     if (excluded[el.material]) {
       ++out.elements;
       out.mass += el.density * std::abs(quad_area(state.reference_nodes(el)));  // rho0 A0: the mass itself
@@ -46,21 +43,12 @@ ExcludedMaterials exclude_materials(TransferState& state, const std::vector<std:
       for (int a = 0; a < el.node_count; ++a) out.top = std::max(out.top, x[a].y());
       continue;
     }
-    elements.push_back(el);
-    elements.back().material = new_index[el.material];
-    for (std::size_t g = state.gauss_offset[e]; g < state.gauss_offset[e + 1]; ++g) {
-      stress.push_back(state.gauss_stress[g]);
-      if (has_reference) reference_stress.push_back(state.reference_gauss_stress[g]);
-      if (has_strain) shear_strain.push_back(state.gauss_shear_strain[g]);
-    }
+    el.material = new_index[el.material];
+    kept.add(el, state.gauss_offset[e], state.gauss_offset[e + 1]);
   }
-  if (elements.empty()) throw common::InputError(option, "every element of the model would be left out");
-  state.elements = std::move(elements);
+  if (kept.empty()) throw common::InputError(option, "every element of the model would be left out");
+  kept.install(state);
   state.materials = std::move(materials);
-  state.gauss_stress = std::move(stress);
-  state.reference_gauss_stress = std::move(reference_stress);
-  state.gauss_shear_strain = std::move(shear_strain);
-  state.index_gauss_points();
   return out;
 }
 

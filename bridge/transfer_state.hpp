@@ -71,4 +71,22 @@ struct TransferState {
   void index_gauss_points();
 };
 
+/// A new element list for a state, built element by element (triangles split, materials left out): the
+/// elements and every per-Gauss-point field of theirs, renumbered together; install() puts them in place.
+class RenumberedElements {
+ public:
+  explicit RenumberedElements(const TransferState& state) : state_(state) {}
+  /// Appends element `el` with old Gauss points [g0, g1) (each once, in order).
+  void add(const TransferElement& el, std::size_t g0, std::size_t g1);
+  bool empty() const { return elements_.empty(); }
+  /// The new elements and fields into `state` (the one given to the constructor), Gauss points re-indexed.
+  void install(TransferState& state);
+
+ private:
+  const TransferState& state_;
+  std::vector<TransferElement> elements_;
+  std::vector<Stress6> stress_, reference_stress_;
+  std::vector<double> shear_strain_;
+};
+
 }  // namespace bridge

@@ -46,25 +46,13 @@ std::size_t split_triangles(TransferState& state) {
     return m;
   };
 
-  std::vector<TransferElement> elements;
-  std::vector<Stress6> stress, reference_stress;
-  std::vector<double> shear_strain;
-  const bool has_reference = !state.reference_gauss_stress.empty(), has_strain = !state.gauss_shear_strain.empty();
-  // Gauss point g of the old numbering, appended to the new one (every per-Gauss-point field).
-  const auto take = [&](std::size_t g) {
-    stress.push_back(state.gauss_stress[g]);
-    if (has_reference) reference_stress.push_back(state.reference_gauss_stress[g]);
-    if (has_strain) shear_strain.push_back(state.gauss_shear_strain[g]);
-  };
-  elements.reserve(3 * state.elements.size());
-  stress.reserve(state.gauss_stress.size() + 2 * state.elements.size());
+  RenumberedElements renumbered(state);  // every per-Gauss-point field with its element
   std::size_t split = 0;
   for (std::size_t e = 0; e < state.elements.size(); ++e) {
     const TransferElement& el = state.elements[e];
     const std::size_t g0 = state.gauss_offset[e], g1 = state.gauss_offset[e + 1];
     if (el.node_count != 3) {
-      elements.push_back(el);
-      for (std::size_t g = g0; g < g1; ++g) take(g);
+      renumbered.add(el, g0, g1);
       continue;
     }
     ++split;
@@ -78,15 +66,10 @@ std::size_t split_triangles(TransferState& state) {
                     side[static_cast<std::size_t>((k + 2) % 3)]};
       quad.node_count = 4;
       quad.gauss_points = 1;
-      elements.push_back(quad);
-      take(g0);
+      renumbered.add(quad, g0, g0 + 1);
     }
   }
-  state.elements = std::move(elements);
-  state.gauss_stress = std::move(stress);
-  state.reference_gauss_stress = std::move(reference_stress);
-  state.gauss_shear_strain = std::move(shear_strain);
-  state.index_gauss_points();
+  renumbered.install(state);
   return split;
 }
 

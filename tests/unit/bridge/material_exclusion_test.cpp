@@ -67,13 +67,14 @@ TEST(MaterialExclusion, TheFoundationGoesWithItsGaussPointsAndTheSoilIsRenumbere
 
 TEST(MaterialExclusion, AnUnknownMaterialOrNothingLeftIsAnError) {
   bridge::TransferState st = foundation_and_soil();
+  std::string message;
   try {
     bridge::exclude_materials(st, {"3"}, "--exclude-material");
-    FAIL() << "no error";
   } catch (const common::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("--exclude-material"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("they use: 1, 2"), std::string::npos) << e.what();
+    message = e.what();
   }
+  EXPECT_NE(message.find("--exclude-material"), std::string::npos) << message;
+  EXPECT_NE(message.find("they use: 1, 2"), std::string::npos) << message;
   EXPECT_EQ(st.elements.size(), 3u);  // untouched
   EXPECT_THROW(bridge::exclude_materials(st, {"1", "2"}, "--exclude-material"), common::InputError);
   EXPECT_EQ(st.elements.size(), 3u);
