@@ -1,6 +1,7 @@
 #include "bridge/material_exclusion.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "common/input_error.hpp"
