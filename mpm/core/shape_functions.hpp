@@ -17,6 +17,7 @@
 // lp = nsize * h / 4 (nsize = 2/ppd: lp = h / (2 ppd)). For l <= 1/2 (nsize <= 2) the particle touches at
 // most the 3 nodes nearest to it per axis: nearest node n and n - 1, n + 1.
 #include <cmath>
+#include <type_traits>
 
 #include "mpm/core/lanes.hpp"
 
@@ -47,6 +48,17 @@ struct LinearShape {
     for (int a = 0; a < kWidth; ++a) {
       wk[2 * kWidth + a] *= ihx;
       wk[3 * kWidth + a] *= ihy;
+    }
+  }
+  /// Every axis of a particle in `dim` dimensions (eval_xy's generalisation for the 3D engine; dim = 2 gives
+  /// eval_xy's values): the stencil's first node per axis and the block wk = [w per axis (W each), then
+  /// dw / h per axis (W each)]; node (a_0 .. a_dim-1) of the stencil weighs prod_d w_d[a_d].
+  template <int dim>
+  static void eval_axes(const double (&s)[dim], const double (&l)[dim], const int (&max_cell)[dim],
+                        const double (&ih)[dim], int (&first)[dim], double* wk) {
+    for (int d = 0; d < dim; ++d) {
+      eval(s[d], l[d], max_cell[d], first[d], wk + d * kWidth, wk + (dim + d) * kWidth);
+      for (int a = 0; a < kWidth; ++a) wk[(dim + d) * kWidth + a] *= ih[d];
     }
   }
   /// The stencil's first node (bi, bj), as eval_xy finds it.
@@ -146,6 +158,36 @@ struct GimpShape {
       wk[kWidth + a] = w[a][1];
       wk[2 * kWidth + a] = dw[a][0];
       wk[3 * kWidth + a] = dw[a][1];
+    }
+  }
+  /// Every axis of a particle in `dim` dimensions (see LinearShape::eval_axes), eval_xy's branch-free lanes:
+  /// two for dim = 2 (eval_xy itself, bit for bit), four for dim = 3 (x, y, z and an idle lane); per axis
+  /// node()'s values, with eval_xy's one exception at l = 1/2.
+  template <int dim>
+  static void eval_axes(const double (&s)[dim], const double (&l)[dim], const int (&/*max_cell*/)[dim],
+                        const double (&ih)[dim], int (&first)[dim], double* wk) {
+    static_assert(dim == 2 || dim == 3, "2D or 3D");
+    using V = std::conditional_t<dim == 2, Double2, Double4>;
+    constexpr int kLanes = static_cast<int>(sizeof(V) / sizeof(double));
+    V sv = splat<V>(1.5), lv = splat<V>(0.5), ihv = splat<V>(1.0), base = splat<V>(0.0);  // the idle lane: any piece
+    for (int d = 0; d < dim; ++d) {
+      first[d] = nearest_node(s[d]) - 1;
+      sv[d] = s[d];
+      lv[d] = l[d];
+      ihv[d] = ih[d];
+      base[d] = static_cast<double>(first[d]);
+    }
+    const V il = 1.0 / lv;
+    V w[kWidth], dw[kWidth];
+    outer_node(sv - base, 1.0, lv, il, w[0], dw[0]);
+    middle_node(sv - (base + 1.0), lv, il, w[1], dw[1]);
+    outer_node(-(sv - (base + 2.0)), -1.0, lv, il, w[2], dw[2]);
+    for (int a = 0; a < kWidth; ++a) {
+      dw[a] *= ihv;
+      for (int d = 0; d < dim; ++d) {
+        wk[d * kWidth + a] = w[a][d];
+        wk[(dim + d) * kWidth + a] = dw[a][d];
+      }
     }
   }
   /// The stencil's first node (bi, bj), as eval_xy finds it.

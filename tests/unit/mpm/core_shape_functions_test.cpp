@@ -138,4 +138,75 @@ TEST(ShapeFunctions, LinearClampsToTheLastCell) {
   EXPECT_CLOSE(w[1], 1.0, 1e-15, 0);
 }
 
+// The dimension-generic evaluation (eval_axes<dim>, for the 3D engine of issue 37): in 2D eval_xy's values
+// bit for bit; in 3D eval()'s per axis (bit for bit away from l = 1/2's mid-line ulp), and the 27- (uGIMP)
+// or 8-node (linear) tensor-product stencil a partition of unity that reproduces linear fields and their
+// gradients: sum N = 1, sum grad N = 0, sum N x_i = x_p, sum x_i (x) grad N_i = I.
+template <class Shape>
+void check_eval_axes(double l) {
+  constexpr int W = Shape::kWidth;
+  const double h[3] = {0.7, 1.3, 0.9};
+  const double ih[3] = {1.0 / h[0], 1.0 / h[1], 1.0 / h[2]};
+  const int max_cell[3] = {10, 10, 10};
+  for (double t = 1.0; t <= 4.0; t += 0.0137) {
+    // 2D: eval_xy.
+    {
+      const double s2[2] = {t, 5.0 - 0.61 * t}, l2[2] = {l, 0.5 * l}, ih2[2] = {ih[0], ih[1]};
+      const int max2[2] = {10, 10};
+      int first[2] = {0, 0}, bi = 0, bj = 0;
+      double wk[4 * W], expected[4 * W];
+      Shape::template eval_axes<2>(s2, l2, max2, ih2, first, wk);
+      Shape::eval_xy(s2[0], s2[1], l2[0], l2[1], 10, 10, ih2[0], ih2[1], bi, bj, expected);
+      ASSERT_EQ(first[0], bi);
+      ASSERT_EQ(first[1], bj);
+      for (int e = 0; e < 4 * W; ++e) ASSERT_EQ(wk[e], expected[e]) << "t " << t << " entry " << e;
+    }
+    // 3D: eval per axis, and the tensor product.
+    const double s3[3] = {t, 5.0 - 0.61 * t, 1.3 + 0.37 * t}, l3[3] = {l, 0.5 * l, 0.75 * l};
+    int first[3] = {0, 0, 0};
+    double wk[6 * W];
+    Shape::template eval_axes<3>(s3, l3, max_cell, ih, first, wk);
+    for (int d = 0; d < 3; ++d) {
+      int base = 0;
+      double w[W], dw[W];
+      Shape::eval(s3[d], l3[d], 10, base, w, dw);
+      ASSERT_EQ(first[d], base);
+      for (int a = 0; a < W; ++a) {
+        ASSERT_EQ(wk[d * W + a], w[a]) << "axis " << d << " t " << t;
+        ASSERT_EQ(wk[(3 + d) * W + a], dw[a] * ih[d]) << "axis " << d << " t " << t;
+      }
+    }
+    double sum = 0, grad[3] = {0, 0, 0}, x[3] = {0, 0, 0}, xgrad[3][3] = {};
+    for (int a = 0; a < W; ++a)
+      for (int b = 0; b < W; ++b)
+        for (int c = 0; c < W; ++c) {
+          const int idx[3] = {a, b, c};
+          double n = 1.0, g[3] = {1.0, 1.0, 1.0};
+          for (int d = 0; d < 3; ++d) {
+            n *= wk[d * W + idx[d]];
+            for (int e = 0; e < 3; ++e) g[e] *= e == d ? wk[(3 + d) * W + idx[d]] : wk[d * W + idx[d]];
+          }
+          sum += n;
+          for (int d = 0; d < 3; ++d) {
+            const double xi = (first[d] + idx[d]) * h[d];  // the node's coordinate
+            grad[d] += g[d];
+            x[d] += n * xi;
+            for (int e = 0; e < 3; ++e) xgrad[d][e] += xi * g[e];
+          }
+        }
+    EXPECT_CLOSE(sum, 1.0, 1e-14, 0);
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_CLOSE(grad[d], 0.0, 1e-13, 0);
+      EXPECT_CLOSE(x[d], s3[d] * h[d], 1e-13, 0);
+      for (int e = 0; e < 3; ++e) EXPECT_CLOSE(xgrad[d][e], d == e ? 1.0 : 0.0, 1e-13, 0);
+    }
+  }
+}
+
+TEST(ShapeFunctions, EveryAxisAtOnceIn2DAnd3D) {
+  check_eval_axes<LinearShape>(0.0);
+  for (double l : {0.05, 0.125, 0.25, 0.45}) check_eval_axes<GimpShape>(l);
+}
+
 }  // namespace
+
