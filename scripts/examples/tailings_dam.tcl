@@ -26,8 +26,11 @@
 # friction on the effective stress of the transfer (--effective-friction; without it the dam body holds the
 # liquefied pond: bridge/README.md).
 #
+# The elastic foundation (FEM material 1) does not flow: the sample run leaves it out of MPM, whose base takes its
+# place at its top (fem2mpm --exclude-material 1 --base-y 8; bridge/README.md, "Layers and materials").
+#
 # Sample run (the transfer window: one FEM run, transfers at 4, 8 and 12 s, each run 10 s in MPM; minutes):
-#   scripts/hybrid_run.py scripts/examples/tailings_dam.tcl --transfer 4,8,12 --duration 10 --jobs 2 --out results/tailings_dam --units kN --ppd 8 --cell-size 1 --cfl 0.4 --base-friction 0.6 --residual-ratio 0.06 --effective-friction
+#   scripts/hybrid_run.py scripts/examples/tailings_dam.tcl --transfer 4,8,12 --duration 10 --jobs 2 --out results/tailings_dam --units kN --ppd 8 --cell-size 1 --cfl 0.4 --base-friction 0.6 --residual-ratio 0.06 --effective-friction --exclude-material 1 --base-y 8
 #
 # Test run (tests/regression/study/examples_sample_runs_test.py: these values replace the sample run's):
 #   --transfer 2 --duration 1.5 --jobs 1 --ppd 2 --cell-size 4 -- -tend 2
