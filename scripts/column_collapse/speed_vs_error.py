@@ -116,8 +116,8 @@ def report(out, rows):
         ax.plot([x], [y], "o" if r["transfer"] == "apic" else "s", color=colors[r["cell"]],
                 markerfacecolor=colors[r["cell"]] if r["ppd"] >= 4 else "white", markersize=7)
         ax.annotate("%g m, %dx%d, %s%s" % (r["cell"], r["ppd"], r["ppd"], r["transfer"].upper(),
-                                           " (reference)" if r["reference"] else ""),
-                    (x, y), fontsize=6, xytext=(4, 2), textcoords="offset points")
+                                           " (reference, drawn at the left edge)" if r["reference"] else ""),
+                    (x, y), fontsize=6, xytext=(4, 2) if r["transfer"] == "apic" else (4, -8), textcoords="offset points")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("runout error relative to the reference run (%)")
