@@ -67,10 +67,10 @@ def collect(out, cells, ppds, transfers, t_total):
                 wall = float(open(os.path.join(d, "wall.txt")).read())
                 with open(os.path.join(d, "mpm.json")) as f:
                     nsteps = json.load(f)["analysis"]["nsteps"]
-                particles = int(round(50.0 * 40.0 / cell ** 2 * ppd ** 2))
+                particles = int(round(50.0 / cell)) * int(round(40.0 / cell)) * ppd ** 2  # write_mpm_only_deck's lattice
                 rows.append({"cell": cell, "ppd": ppd, "transfer": transfer, "particles": particles,
                              "particle_steps_per_simulated_s": particles * nsteps / t_total,
-                             "throughput_m_per_s": particles * nsteps / wall / 1e6,
+                             "throughput_m_per_s": particles * nsteps / max(wall, 1e-3) / 1e6,
                              "runout": (s["runout_x_p98"][-1] - 50.0) / 50.0, "height_ratio": s["height_y_p995"][-1] / 40.0,
                              "wall_s": wall, "wall_per_simulated_s": wall / t_total})
     return rows
