@@ -6,18 +6,16 @@
 
 namespace constitutive {
 
-namespace {
-Eigen::Matrix3d as_tensor(const Stress6& s) {
+Eigen::Matrix3d stress_tensor(const Stress6& s) {
   Eigen::Matrix3d m;
   m << s[0], s[3], s[5],  //
       s[3], s[1], s[4],   //
       s[5], s[4], s[2];
   return m;
 }
-}  // namespace
 
 PrincipalStresses principal_stresses(const Stress6& s) {
-  const Eigen::Matrix3d m = as_tensor(s);
+  const Eigen::Matrix3d m = stress_tensor(s);
   // Householder tridiagonalisation + implicit QR: accurate where eigenvalues (nearly) repeat, which the
   // closed-form (trigonometric) solution is not, and the edges of the pyramid are exactly there.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
@@ -40,7 +38,7 @@ MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial, const MohrCoulo
   // scale, far above that solution's round-off; a point nearer the surface takes the accurate path below.
   {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> direct;
-    direct.computeDirect(as_tensor(trial), Eigen::EigenvaluesOnly);
+    direct.computeDirect(stress_tensor(trial), Eigen::EigenvaluesOnly);
     const Eigen::Vector3d& v = direct.eigenvalues();  // ascending
     const double margin = 1e-10 * std::max(v.cwiseAbs().maxCoeff(), map.surface().strength.cohesion);
     if (map.strictly_admits(Extremes<double>{v[2] + margin, v[0] - margin}))

@@ -37,6 +37,9 @@ inline Stress6 elastic_trial_3d(const Stress6& stress, const Strain6& dstrain, c
   return trial;
 }
 
+/// The stress as a symmetric 3x3 tensor.
+Eigen::Matrix3d stress_tensor(const Stress6& stress);
+
 /// The principal values of a symmetric stress, sorted s1 >= s2 >= s3, and their unit directions (column i
 /// of `axes` belongs to sorted[i]; an orthonormal basis, also where values repeat).
 struct PrincipalStresses {

@@ -33,12 +33,6 @@ MohrCoulombStrength strength(double phi_deg, double psi_deg, double c, double t 
   return {phi_deg * kDeg, psi_deg * kDeg, c, t};
 }
 
-Eigen::Matrix3d tensor(const Stress6& s) {
-  Eigen::Matrix3d m;
-  m << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
-  return m;
-}
-
 Stress6 voigt(const Eigen::Matrix3d& m) {
   Stress6 s;
   s << m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(1, 2), m(0, 2);
@@ -150,10 +144,12 @@ TEST(MohrCoulomb3D, ARotatedTrialReturnsTheRotatedStress) {
     const Stress6 trial = with_principal(u(rng), u(rng), u(rng), rotation(angle(rng), angle(rng), angle(rng)));
     const Eigen::Matrix3d r = rotation(angle(rng), angle(rng), angle(rng));
     const auto a = constitutive::mohr_coulomb_return_3d(trial, kElastic, st);
-    const auto b = constitutive::mohr_coulomb_return_3d(voigt(r * tensor(trial) * r.transpose()), kElastic, st);
+    const Stress6 rotated = voigt(r * constitutive::stress_tensor(trial) * r.transpose());
+    const auto b = constitutive::mohr_coulomb_return_3d(rotated, kElastic, st);
     ASSERT_EQ(a.region, b.region);
     const double scale = 1.0 + trial.cwiseAbs().maxCoeff();
-    EXPECT_LT((voigt(r * tensor(a.stress) * r.transpose()) - b.stress).cwiseAbs().maxCoeff(), 1e-9 * scale);
+    const Stress6 a_rotated = voigt(r * constitutive::stress_tensor(a.stress) * r.transpose());
+    EXPECT_LT((a_rotated - b.stress).cwiseAbs().maxCoeff(), 1e-9 * scale);
   }
 }
 
@@ -180,7 +176,7 @@ TEST(MohrCoulomb3D, AGeneralTrialReturnsOntoTheSurfaceWithTheFlowRule) {
     EXPECT_CLOSE(f_main(p, st), 0.0, 1e-6, 0.0);
     EXPECT_CLOSE(constitutive::mohr_coulomb_yield_3d(up.stress, st), 0.0, 1e-6, 0.0);
     // Coaxial: in the trial's principal frame the stress and the plastic strain are diagonal.
-    const Eigen::Matrix3d s_local = r.transpose() * tensor(up.stress) * r;
+    const Eigen::Matrix3d s_local = r.transpose() * constitutive::stress_tensor(up.stress) * r;
     const Eigen::Matrix3d e_local = r.transpose() * strain_tensor(up.plastic_strain_increment) * r;
     EXPECT_LT(std::abs(s_local(0, 1)) + std::abs(s_local(1, 2)) + std::abs(s_local(0, 2)), 1e-6);
     const double e_scale = e_local.diagonal().cwiseAbs().maxCoeff();

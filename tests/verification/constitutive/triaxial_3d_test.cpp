@@ -29,12 +29,6 @@ using constitutive::Stress6;
 
 constexpr double kDeg = M_PI / 180.0;
 
-Eigen::Matrix3d tensor(const Stress6& s) {
-  Eigen::Matrix3d m;
-  m << s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2];
-  return m;
-}
-
 /// A symmetric strain tensor as (exx, eyy, ezz, gxy, gyz, gxz), engineering shears.
 Strain6 engineering(const Eigen::Matrix3d& e) {
   Strain6 v;
@@ -68,8 +62,9 @@ TriaxialResult triaxial(const IsotropicElasticity& el, const MohrCoulombStrength
     // Secant iterations on the lateral strain increment d (exx = eyy = d by symmetry).
     auto local_after = [&](double lateral, constitutive::MohrCoulombUpdate3D& up) {
       const Eigen::Matrix3d de_local = Eigen::Vector3d(lateral, lateral, dez).asDiagonal();
-      up = constitutive::mohr_coulomb_return_3d(constitutive::elastic_trial_3d(s, engineering(r * de_local * r.transpose()), el), map);
-      return Eigen::Matrix3d(r.transpose() * tensor(up.stress) * r);
+      const Strain6 de = engineering(r * de_local * r.transpose());
+      up = constitutive::mohr_coulomb_return_3d(constitutive::elastic_trial_3d(s, de, el), map);
+      return Eigen::Matrix3d(r.transpose() * constitutive::stress_tensor(up.stress) * r);
     };
     constitutive::MohrCoulombUpdate3D up{};
     double d0 = d, f0 = local_after(d0, up)(0, 0) + pc;
@@ -124,8 +119,8 @@ TEST(Triaxial3D, ExtensionReachesChenAndHansLimitWithTheFlowRulesDilatancy) {
   const double pc = 100e3, kp = (1 + std::sin(st.friction)) / (1 - std::sin(st.friction));
   const double limit = pc / kp - 2 * st.cohesion / std::sqrt(kp);  // [CH], compression positive
   const TriaxialResult t = triaxial(kElastic, st, pc, 2e-4, 300, kFrame);
-  std::printf("triaxial extension: axial %.6f kPa (limit %.6f), dilatancy %.9f (flow rule %.9f)\n", -t.axial_stress / 1e3,
-              limit / 1e3, t.dilatancy, 2 * std::sin(st.dilation) / (1 + std::sin(st.dilation)));
+  std::printf("triaxial extension: axial %.6f kPa (limit %.6f), dilatancy %.9f (flow rule %.9f)\n",
+              -t.axial_stress / 1e3, limit / 1e3, t.dilatancy, 2 * std::sin(st.dilation) / (1 + std::sin(st.dilation)));
   EXPECT_EQ(t.region, constitutive::ReturnRegion::EdgeTriaxialExtension);
   EXPECT_CLOSE(-t.axial_stress, limit, 0.0, 1e-9);
   EXPECT_LT(t.lateral_error, 1e-9 * pc);
