@@ -40,15 +40,13 @@ struct LinearShape {
     dw[1] = 1.0;
   }
   /// Both axes of a particle: the stencil's first node (bi, bj) and its weights block
-  /// wk = [wx (W), wy (W), dwx / hx (W), dwy / hy (W)] (ih = 1 / h).
+  /// wk = [wx (W), wy (W), dwx / hx (W), dwy / hy (W)] (ih = 1 / h): eval_axes<2>.
   static void eval_xy(double sx, double sy, double lx, double ly, int max_i, int max_j, double ihx, double ihy,
                       int& bi, int& bj, double* wk) {
-    eval(sx, lx, max_i, bi, wk, wk + 2 * kWidth);
-    eval(sy, ly, max_j, bj, wk + kWidth, wk + 3 * kWidth);
-    for (int a = 0; a < kWidth; ++a) {
-      wk[2 * kWidth + a] *= ihx;
-      wk[3 * kWidth + a] *= ihy;
-    }
+    int first[2];
+    eval_axes<2>({sx, sy}, {lx, ly}, {max_i, max_j}, {ihx, ihy}, first, wk);
+    bi = first[0];
+    bj = first[1];
   }
   /// Every axis of a particle in `dim` dimensions (eval_xy's generalisation for the 3D engine; dim = 2 gives
   /// eval_xy's values): the stencil's first node per axis and the block wk = [w per axis (W each), then
@@ -121,7 +119,6 @@ struct GimpShape {
     w = lane_select(hat, one - a, one - 0.5 * (r * r + l * l) * il);
     dw = lane_select(hat, -lane_select(r < splat<V>(0.0), splat<V>(-1.0), one), -r * il);
   }
-  static void middle_node2(Double2 r, Double2 l, Double2 il, Double2& w, Double2& dw) { middle_node(r, l, il, w, dw); }
   /// The same for an outer node of the stencil at distance a = |r| in (1/2, 3/2] (a >= l: never the
   /// core piece) on the side of sign `sgn` (+1: the node before the particle, -1: the one after): the
   /// hat, edge or outside piece.
@@ -134,31 +131,17 @@ struct GimpShape {
     w = lane_select(outside, zero, lane_select(edge, w_edge, one - a));
     dw = lane_select(outside, zero, lane_select(edge, dw_edge, splat<V>(-sgn)));
   }
-  static void outer_node2(Double2 a, double sgn, Double2 l, Double2 il, Double2& w, Double2& dw) {
-    outer_node(a, sgn, l, il, w, dw);
-  }
   /// Both axes of a particle (see LinearShape::eval_xy), the same values as eval() per axis: each node
   /// takes only the pieces its position allows (the middle node core or hat, the outer ones hat, edge
   /// or outside), node()'s expressions. The one exception is a particle of l = 1/2 (nsize = 2) within
   /// an ulp of a cell's mid-line, where floor(s + 1/2) rounds across it: eval() then meets the
-  /// neighbouring piece, whose value at the shared boundary differs by an ulp.
-  static void eval_xy(double sx, double sy, double lx, double ly, int /*max_i*/, int /*max_j*/, double ihx,
-                      double ihy, int& bi, int& bj, double* wk) {
-    bi = nearest_node(sx) - 1;
-    bj = nearest_node(sy) - 1;
-    const Double2 s{sx, sy}, l{lx, ly}, base{static_cast<double>(bi), static_cast<double>(bj)};
-    const Double2 il = 1.0 / l, ih{ihx, ihy};
-    Double2 w[kWidth], dw[kWidth];
-    outer_node2(s - base, 1.0, l, il, w[0], dw[0]);             // r in [1/2, 3/2)
-    middle_node2(s - (base + 1.0), l, il, w[1], dw[1]);         // r in [-1/2, 1/2)
-    outer_node2(-(s - (base + 2.0)), -1.0, l, il, w[2], dw[2]);  // r in [-3/2, -1/2)
-    for (int a = 0; a < kWidth; ++a) {
-      dw[a] *= ih;
-      wk[a] = w[a][0];
-      wk[kWidth + a] = w[a][1];
-      wk[2 * kWidth + a] = dw[a][0];
-      wk[3 * kWidth + a] = dw[a][1];
-    }
+  /// neighbouring piece, whose value at the shared boundary differs by an ulp. eval_axes<2>.
+  static void eval_xy(double sx, double sy, double lx, double ly, int max_i, int max_j, double ihx, double ihy,
+                      int& bi, int& bj, double* wk) {
+    int first[2];
+    eval_axes<2>({sx, sy}, {lx, ly}, {max_i, max_j}, {ihx, ihy}, first, wk);
+    bi = first[0];
+    bj = first[1];
   }
   /// Every axis of a particle in `dim` dimensions (see LinearShape::eval_axes), eval_xy's branch-free lanes:
   /// two for dim = 2 (eval_xy itself, bit for bit), four for dim = 3 (x, y, z and an idle lane); per axis
@@ -168,7 +151,6 @@ struct GimpShape {
                         const double (&ih)[dim], int (&first)[dim], double* wk) {
     static_assert(dim == 2 || dim == 3, "2D or 3D");
     using V = std::conditional_t<dim == 2, Double2, Double4>;
-    constexpr int kLanes = static_cast<int>(sizeof(V) / sizeof(double));
     V sv = splat<V>(1.5), lv = splat<V>(0.5), ihv = splat<V>(1.0), base = splat<V>(0.0);  // the idle lane: any piece
     for (int d = 0; d < dim; ++d) {
       first[d] = nearest_node(s[d]) - 1;
