@@ -74,6 +74,7 @@ Example (the dry shaken embankment, two synthetic PGAs and a folder of PEER reco
 import argparse
 import csv
 import hashlib
+import itertools
 import json
 import math
 import os
@@ -220,7 +221,7 @@ def collect_records(args):
                         "correction": [c * scale for c in corr]})
     if args.pga:
         import ground_motion
-        for seed, pga in [(seed, pga) for seed in (args.seed or [ground_motion.DEFAULTS["seed"]]) for pga in args.pga]:
+        for seed, pga in itertools.product(args.seed or [ground_motion.DEFAULTS["seed"]], args.pga):
             p = dict(ground_motion.DEFAULTS, seed=seed, pga=pga)
             _, a = ground_motion.generate(p)
             a, corr = records.baseline_correct(a, p["dt"])

@@ -67,7 +67,8 @@ def collect(out, cells, ppds, transfers, t_total):
                 wall = float(open(os.path.join(d, "wall.txt")).read())
                 with open(os.path.join(d, "mpm.json")) as f:
                     nsteps = json.load(f)["analysis"]["nsteps"]
-                particles = int(round(50.0 / cell)) * int(round(40.0 / cell)) * ppd ** 2  # write_mpm_only_deck's lattice
+                with open(os.path.join(d, "particles.txt")) as f:  # the deck's particle file: its count first
+                    particles = int(f.readline())
                 rows.append({"cell": cell, "ppd": ppd, "transfer": transfer, "particles": particles,
                              "particle_steps_per_simulated_s": particles * nsteps / t_total,
                              "throughput_m_per_s": particles * nsteps / max(wall, 1e-3) / 1e6,
