@@ -60,12 +60,17 @@ enum class AfterStress {
   MapForces,  ///< USF: p2g of the forces from the updated stress (the same sums as a separate p2g pass)
 };
 
+/// The engine's dimension: the `dim` of the template it is becoming (issue 37, mpm/core/README.md).
+inline constexpr int kDim = 2;
+
 struct ParticleArrays {
   std::vector<std::int64_t> id;
   std::vector<std::uint32_t> material;  ///< index into Engine::materials_
   std::vector<double> mass, volume;
-  std::vector<double> lx, ly;  ///< GIMP half-size in cell units, CB-Geo's nsize / 4 (exactly: nsize = 4 lx)
-  std::vector<double> x, y, ux, uy, vx, vy;
+  /// Per axis d: position[d][p] (m), displacement (m), velocity (m/s).
+  std::array<std::vector<double>, kDim> position, displacement, velocity;
+  /// GIMP half-size in cell units, CB-Geo's nsize / 4 (exactly: nsize = 4 half_size).
+  std::array<std::vector<double>, kDim> half_size;
   std::vector<double> stress;         ///< 4 per particle: sxx, syy, szz, sxy (one block: the material reads it whole)
   std::vector<double> exx, eyy, gxy, epsv;
   std::vector<double> svars;          ///< kStateVariables per particle

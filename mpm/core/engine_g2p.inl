@@ -49,10 +49,10 @@ void Engine::g2p_particle(std::size_t c, std::size_t k, G2pAlso also, double* ba
                                 dxs, dys, also == G2pAlso::StrainIncrements || kBilinearAffine);
   if (also == G2pAlso::StrainIncrements) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
   const double vgx = sums.v[0], vgy = sums.v[1];
-  const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.vx[p], vgx, sums.a[0], dt_);
-  const double vy = Affine ? vgy : transfer_.particle_velocity(cur_.vy[p], vgy, sums.a[1], dt_);
-  nxt_.vx[k] = vx;
-  nxt_.vy[k] = vy;
+  const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.velocity[0][p], vgx, sums.a[0], dt_);
+  const double vy = Affine ? vgy : transfer_.particle_velocity(cur_.velocity[1][p], vgy, sums.a[1], dt_);
+  nxt_.velocity[0][k] = vx;
+  nxt_.velocity[1][k] = vy;
   double B_old[4] = {0, 0, 0, 0};
   if constexpr (Affine) new_affine_matrix<Shape>(k, p, sums, vgx, vgy, also == G2pAlso::RemapMomentum ? B_old : nullptr);
   if (also == G2pAlso::RemapMomentum) {
@@ -98,14 +98,14 @@ void Engine::g2p_run(std::size_t c, std::size_t k, G2pAlso also, double* band) {
   if constexpr (!Affine) {
     Double4 vx_old, vy_old;
     for (int l = 0; l < kRunLanes; ++l) {
-      vx_old[l] = cur_.vx[p[l]];
-      vy_old[l] = cur_.vy[p[l]];
+      vx_old[l] = cur_.velocity[0][p[l]];
+      vy_old[l] = cur_.velocity[1][p[l]];
     }
     vx = transfer_.particle_velocity(vx_old, sums.vx, sums.ax, dt_);
     vy = transfer_.particle_velocity(vy_old, sums.vy, sums.ay, dt_);
   }
-  store4(&nxt_.vx[k], vx);
-  store4(&nxt_.vy[k], vy);
+  store4(&nxt_.velocity[0][k], vx);
+  store4(&nxt_.velocity[1][k], vy);
   alignas(32) double B_old[4][kRunLanes] = {};  // APIC, MUSL: entry e (xx xy yx yy) of lane l's B at x^n
   if constexpr (Affine)
     for (int l = 0; l < kRunLanes; ++l) {
@@ -139,12 +139,13 @@ void Engine::new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& s
                                double* at_old) {
   const double B[4] = {sums.b_dx[0], sums.b_dy[0], sums.b_dx[1], sums.b_dy[1]};
   const double C[4] = {sums.L.d_dx[0], sums.L.d_dy[0], sums.L.d_dx[1], sums.L.d_dy[1]};
-  const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;  // place_particle's x^(n+1)
+  const double x0 = cur_.position[0][p], y0 = cur_.position[1][p];
+  const double x = x0 + dt_ * vgx, y = y0 + dt_ * vgy;  // place_particle's x^(n+1)
   affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
                    grid_.hx, grid_.hy, &nxt_.affine[4 * k]);
   if (at_old)
-    affine_matrix_at(Shape{}, B, C, (cur_.x[p] - grid_.x0) * inv_hx_, (cur_.y[p] - grid_.y0) * inv_hy_,
-                     cells_x_ - 1, cells_y_ - 1, grid_.hx, grid_.hy, at_old);
+    affine_matrix_at(Shape{}, B, C, (x0 - grid_.x0) * inv_hx_, (y0 - grid_.y0) * inv_hy_, cells_x_ - 1,
+                     cells_y_ - 1, grid_.hx, grid_.hy, at_old);
 }
 
 /// g2p's last part for the particle at iteration index k (storage index p): x += dt sum N v_new and the
@@ -152,12 +153,12 @@ void Engine::new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& s
 /// and its record for the re-sort.
 void Engine::place_particle(std::size_t c, std::size_t k, std::uint32_t p, double vgx, double vgy, double vx,
                             double vy) {
-  const double x = cur_.x[p] + dt_ * vgx, y = cur_.y[p] + dt_ * vgy;
+  const double x = cur_.position[0][p] + dt_ * vgx, y = cur_.position[1][p] + dt_ * vgy;
   const double h = std::min(grid_.hx, grid_.hy);
-  nxt_.x[k] = x;
-  nxt_.y[k] = y;
-  nxt_.ux[k] = cur_.ux[p] + dt_ * vgx;
-  nxt_.uy[k] = cur_.uy[p] + dt_ * vgy;
+  nxt_.position[0][k] = x;
+  nxt_.position[1][k] = y;
+  nxt_.displacement[0][k] = cur_.displacement[0][p] + dt_ * vgx;
+  nxt_.displacement[1][k] = cur_.displacement[1][p] + dt_ * vgy;
   const double speed = std::sqrt(vx * vx + vy * vy);
   // A uGIMP particle is on the grid while its domain (half-size lp = l h) overlaps the mesh region:
   // it can sit up to lp beyond a fixed boundary, where its stencil still lies in the halo ring (its
@@ -169,7 +170,8 @@ void Engine::place_particle(std::size_t c, std::size_t k, std::uint32_t p, doubl
     return x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
   };
   const bool on_grid =
-      within(0.0, 0.0) || within(gimp_margin_ * cur_.lx[p] * grid_.hx, gimp_margin_ * cur_.ly[p] * grid_.hy);
+      within(0.0, 0.0) ||
+      within(gimp_margin_ * cur_.half_size[0][p] * grid_.hx, gimp_margin_ * cur_.half_size[1][p] * grid_.hy);
   const auto place_on_grid = [&] {
     nxt_.key[k] = cell_key(x, y);
     merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
@@ -202,10 +204,10 @@ void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Dou
   static_assert(kRunLanes == 4, "a stencil run is one Double4");
   Double4 x0, y0, ux0, uy0;
   for (int l = 0; l < kRunLanes; ++l) {
-    x0[l] = cur_.x[p[l]];
-    y0[l] = cur_.y[p[l]];
-    ux0[l] = cur_.ux[p[l]];
-    uy0[l] = cur_.uy[p[l]];
+    x0[l] = cur_.position[0][p[l]];
+    y0[l] = cur_.position[1][p[l]];
+    ux0[l] = cur_.displacement[0][p[l]];
+    uy0[l] = cur_.displacement[1][p[l]];
   }
   const Double4 dt = splat4(dt_);
   const Double4 x = x0 + dt * vgx, y = y0 + dt * vgy;
@@ -217,7 +219,8 @@ void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Dou
     return;
   }
   // The destinations first: each store4 (a memcpy) could alias a vector's own pointers.
-  double* const to[4] = {&nxt_.x[k], &nxt_.y[k], &nxt_.ux[k], &nxt_.uy[k]};
+  double* const to[4] = {&nxt_.position[0][k], &nxt_.position[1][k], &nxt_.displacement[0][k],
+                         &nxt_.displacement[1][k]};
   std::int64_t* const key_to = &nxt_.key[k];
   std::int64_t key_was[kRunLanes];
   for (int l = 0; l < kRunLanes; ++l) key_was[l] = cur_.key[p[l]];

@@ -15,8 +15,8 @@ void Engine::scatter_particle(std::size_t k, double* g, std::size_t row_stride, 
   double* band_row = g + local_[k];
   if (mass_momentum) {
     const double* B = &cur_.affine[4 * p];  // xx xy yx yy
-    const MomentumContribution<Shape, Affine> momentum(m, cur_.vx[p], cur_.vy[p], Double2{B[0], B[2]},
-                                                       Double2{B[1], B[3]},
+    const MomentumContribution<Shape, Affine> momentum(m, cur_.velocity[0][p], cur_.velocity[1][p],
+                                                       Double2{B[0], B[2]}, Double2{B[1], B[3]},
                                                        Affine ? &affine_weights_[2 * W * k] : nullptr, w);
     scatter_mass_momentum(band_row, row_stride, w, m, momentum);
   }
@@ -50,14 +50,15 @@ bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
       cur_.key[order_[k + kRunLanes - 1]] == cur_.key[order_[k]] && evaluate_run<Shape, Affine>(c, k))
     return true;
   const std::uint32_t p = order_[k];
+  const double x = cur_.position[0][p], y = cur_.position[1][p];
   int bi = 0, bj = 0;
-  Shape::eval_xy((cur_.x[p] - grid_.x0) * ihx, (cur_.y[p] - grid_.y0) * ihy, cur_.lx[p], cur_.ly[p], cells_x_ - 1,
-                 cells_y_ - 1, ihx, ihy, bi, bj, &weights_[4 * W * k]);
+  Shape::eval_xy((x - grid_.x0) * ihx, (y - grid_.y0) * ihy, cur_.half_size[0][p], cur_.half_size[1][p],
+                 cells_x_ - 1, cells_y_ - 1, ihx, ihy, bi, bj, &weights_[4 * W * k]);
   set_stencil(c, k, bi, bj, -1);
   if constexpr (Affine) {  // APIC: the first node's offset and the affine weights, for this step's phases
     double* offset = &stencil_offset_[2 * k];
-    offset[0] = grid_.x0 + bi * grid_.hx - cur_.x[p];
-    offset[1] = grid_.y0 + bj * grid_.hy - cur_.y[p];
+    offset[0] = grid_.x0 + bi * grid_.hx - x;
+    offset[1] = grid_.y0 + bj * grid_.hy - y;
     affine_weights(Shape{}, StencilWeights<W>(&weights_[4 * W * k]), offset[0], offset[1], grid_.hx, grid_.hy,
                    &affine_weights_[2 * W * k]);
   }
@@ -74,10 +75,10 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
   Double4 sx = splat4(0.0), sy = sx, lx = sx, ly = sx;
   for (int l = 0; l < kRunLanes; ++l) {
     const std::uint32_t p = order_[k + static_cast<std::size_t>(l)];
-    sx[l] = (cur_.x[p] - grid_.x0) * inv_hx_;
-    sy[l] = (cur_.y[p] - grid_.y0) * inv_hy_;
-    lx[l] = cur_.lx[p];
-    ly[l] = cur_.ly[p];
+    sx[l] = (cur_.position[0][p] - grid_.x0) * inv_hx_;
+    sy[l] = (cur_.position[1][p] - grid_.y0) * inv_hy_;
+    lx[l] = cur_.half_size[0][p];
+    ly[l] = cur_.half_size[1][p];
     Shape::first_node(sx[l], sy[l], cells_x_ - 1, cells_y_ - 1, bi[l], bj[l]);
     if (bi[l] != bi[0] || bj[l] != bj[0]) return false;
   }
@@ -90,7 +91,7 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
   }
   Double4 ox = splat4(0.0), oy = splat4(0.0), a[W];  // APIC: first node minus particle, affine weights of an axis
   if constexpr (Affine) {
-    for (int l = 0; l < kRunLanes; ++l) ox[l] = grid_.x0 + bi[0] * grid_.hx - cur_.x[order_[k + l]];
+    for (int l = 0; l < kRunLanes; ++l) ox[l] = grid_.x0 + bi[0] * grid_.hx - cur_.position[0][order_[k + l]];
     affine_weights_run_axis(Shape{}, w, dw, ox, grid_.hx, a);
     for (int e = 0; e < W; ++e) store4(&affine_weights_[2 * W * k + 4 * e], a[e]);
   }
@@ -100,7 +101,7 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
     store4(wk + 4 * (3 * W + a), dw[a]);
   }
   if constexpr (Affine) {
-    for (int l = 0; l < kRunLanes; ++l) oy[l] = grid_.y0 + bj[0] * grid_.hy - cur_.y[order_[k + l]];
+    for (int l = 0; l < kRunLanes; ++l) oy[l] = grid_.y0 + bj[0] * grid_.hy - cur_.position[1][order_[k + l]];
     affine_weights_run_axis(Shape{}, w, dw, oy, grid_.hy, a);
     for (int e = 0; e < W; ++e) store4(&affine_weights_[2 * W * k + 4 * (W + e)], a[e]);
     for (int l = 0; l < kRunLanes; ++l) {
@@ -130,8 +131,9 @@ void Engine::scatter_run(std::size_t k, double* g, std::size_t row_stride, bool 
   const std::uint32_t* p = &order_[k];
   const Double4 m{cur_.mass[p[0]], cur_.mass[p[1]], cur_.mass[p[2]], cur_.mass[p[3]]};
   if (mass_momentum) {
-    const Double4 vx{cur_.vx[p[0]], cur_.vx[p[1]], cur_.vx[p[2]], cur_.vx[p[3]]};
-    const Double4 vy{cur_.vy[p[0]], cur_.vy[p[1]], cur_.vy[p[2]], cur_.vy[p[3]]};
+    const double *vx_of = cur_.velocity[0].data(), *vy_of = cur_.velocity[1].data();
+    const Double4 vx{vx_of[p[0]], vx_of[p[1]], vx_of[p[2]], vx_of[p[3]]};
+    const Double4 vy{vy_of[p[0]], vy_of[p[1]], vy_of[p[2]], vy_of[p[3]]};
     if constexpr (Affine) {
       const double* B[kRunLanes] = {&cur_.affine[4 * p[0]], &cur_.affine[4 * p[1]], &cur_.affine[4 * p[2]],
                                     &cur_.affine[4 * p[3]]};

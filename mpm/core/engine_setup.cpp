@@ -29,8 +29,9 @@ std::string num(double v) { return common::number_text(v, 10); }
 void ParticleArrays::resize(std::size_t n) {
   id.resize(n);
   material.resize(n);
-  for (auto* v : {&mass, &volume, &lx, &ly, &x, &y, &ux, &uy, &vx, &vy, &exx, &eyy, &gxy, &epsv})
-    v->resize(n);
+  for (auto* v : {&mass, &volume, &exx, &eyy, &gxy, &epsv}) v->resize(n);
+  for (int d = 0; d < kDim; ++d)
+    for (auto* v : {&position[d], &displacement[d], &velocity[d], &half_size[d]}) v->resize(n);
   stress.resize(4 * n);
   affine.resize(4 * n);
   svars.resize(n * kStateVariables);
@@ -184,8 +185,8 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
     if (m != 0) uniform_material_ = false;
     cur_.id[p] = r.id;
     cur_.material[p] = static_cast<std::uint32_t>(m);
-    cur_.x[p] = r.coord_x;
-    cur_.y[p] = r.coord_y;
+    cur_.position[0][p] = r.coord_x;
+    cur_.position[1][p] = r.coord_y;
     cur_.key[p] = cell_key(r.coord_x, r.coord_y);
     ++per_cell[static_cast<std::size_t>(cell_of(cur_.key[p]))];
   }
@@ -203,12 +204,12 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
     const double nsize_y = sized ? r.nsize_y : 2.0 / std::sqrt(count);
     if (gimp && !(nsize_x > 0 && nsize_x <= 2 && nsize_y > 0 && nsize_y <= 2))
       throw common::InputError("particle " + std::to_string(r.id), "nsize must be in (0, 2] for ED2Q16G cells");
-    cur_.lx[p] = nsize_x / 4.0;
-    cur_.ly[p] = nsize_y / 4.0;
-    cur_.ux[p] = r.displacement_x;
-    cur_.uy[p] = r.displacement_y;
-    cur_.vx[p] = r.velocity_x;
-    cur_.vy[p] = r.velocity_y;
+    cur_.half_size[0][p] = nsize_x / 4.0;
+    cur_.half_size[1][p] = nsize_y / 4.0;
+    cur_.displacement[0][p] = r.displacement_x;
+    cur_.displacement[1][p] = r.displacement_y;
+    cur_.velocity[0][p] = r.velocity_x;
+    cur_.velocity[1][p] = r.velocity_y;
     cur_.stress[4 * p] = r.stress_xx;
     cur_.stress[4 * p + 1] = r.stress_yy;
     cur_.stress[4 * p + 2] = r.stress_zz;

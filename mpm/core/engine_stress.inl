@@ -213,8 +213,7 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     nxt_.id[k] = cur_.id[p];
     nxt_.material[k] = cur_.material[p];
     nxt_.mass[k] = cur_.mass[p];
-    nxt_.lx[k] = cur_.lx[p];
-    nxt_.ly[k] = cur_.ly[p];
+    for (int d = 0; d < kDim; ++d) nxt_.half_size[d][k] = cur_.half_size[d][p];
     if (!cur_.traction_slot.empty()) nxt_.traction_slot[k] = cur_.traction_slot[p];
     if (!std::isfinite(s[0] + s[1] + s[2] + s[3])) report(c, k, ProblemKind::StressNotFinite, cur_.id[p], s[0], s[1]);
   };

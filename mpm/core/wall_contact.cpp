@@ -86,8 +86,8 @@ void Engine::find_wall_contacts() {
                                             [&](std::uint32_t p, std::int64_t k) { return cell_of_particle(p) < k; });
         for (auto it = first; it != order_.end() && cell_of_particle(*it) == index && !touching; ++it) {
           const std::uint32_t p = *it;
-          const double x = dn == 0 ? cur_.x[p] : cur_.y[p];
-          const double half = (dn == 0 ? cur_.lx[p] : cur_.ly[p]) * h[dn];
+          const double x = cur_.position[dn][p];
+          const double half = cur_.half_size[dn][p] * h[dn];
           touching = nc.sign_n * (wall - x) - half <= kContactGapTolerance * h[dn];
         }
       }
