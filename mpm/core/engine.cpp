@@ -22,12 +22,12 @@ namespace mpm::core {
 // The particle's sort key (engine_order.cpp), here for g2p to inline it.
 std::int64_t Engine::cell_key(double x, double y) const {
   // Truncation, then the clamp below: the same as floor + clamp, without the floor calls.
-  const double sx = (x - grid_.x0) * inv_hx_, sy = (y - grid_.y0) * inv_hy_;
+  const double sx = (x - grid_.x0) * inv_h_[0], sy = (y - grid_.y0) * inv_h_[1];
   int i = static_cast<int>(sx);
   int j = static_cast<int>(sy);
-  i = std::clamp(i, 0, cells_x_ - 1);
-  j = std::clamp(j, 0, cells_y_ - 1);
-  const std::int64_t cell = static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_x_;
+  i = std::clamp(i, 0, cells_per_axis_[0] - 1);
+  j = std::clamp(j, 0, cells_per_axis_[1] - 1);
+  const std::int64_t cell = static_cast<std::int64_t>(i) + static_cast<std::int64_t>(j) * cells_per_axis_[0];
   if (grid_.cell_type != CellType::Gimp16) return 4 * cell;
   // uGIMP: the upper half of the cell on an axis has the next node as its nearest (GimpShape::nearest_node).
   const int qx = GimpShape::nearest_node(sx) > i ? 1 : 0, qy = GimpShape::nearest_node(sy) > j ? 1 : 0;
@@ -205,7 +205,7 @@ void Engine::sum_bands_of_row(int j, int values, double* sums) const {
 
 /// The calling thread's scratch row for sum_bands_of_row.
 double* Engine::thread_row_sums() {
-  return &row_sums_[5 * static_cast<std::size_t>(nx_) * static_cast<std::size_t>(omp_get_thread_num())];
+  return &row_sums_[5 * node_row_stride() * static_cast<std::size_t>(omp_get_thread_num())];
 }
 
 /// The grid fields of row j from the chunks' bands (sum_bands_of_row).
@@ -213,7 +213,7 @@ void Engine::reduce_row(int j, GridFields summed) {
   double* s = thread_row_sums();
   sum_bands_of_row(j, 5, s);
   for (int i = bi0_; i < bi1_; ++i, s += 5) {
-    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     if (summed.mass) mass_[n] = s[0];
     if (summed.momentum) {
       momentum_[2 * n] = s[1];
@@ -230,7 +230,7 @@ void Engine::reduce_row(int j, GridFields summed) {
 /// approach into a wall (strain_rate_velocity, nodal_constraints.hpp).
 void Engine::nodal_velocity_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
-    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     double vx = 0.0, vy = 0.0;
     if (mass_[n] > mass_tolerance_) {
       vx = momentum_[2 * n] / mass_[n];
@@ -253,7 +253,7 @@ void Engine::nodal_velocity_row(int j) {
 /// momentum form (nodal_constraints.hpp), and the rate (v_new - v_old) / dt handed to FLIP in place of a.
 void Engine::integrate_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
-    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     double* u = &updated_[4 * n];
     const double m = mass_[n];
     if (!(m > mass_tolerance_)) {

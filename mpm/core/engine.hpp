@@ -183,9 +183,11 @@ class Engine {
 
   // grid
   Grid grid_;
-  int nx_ = 0, ny_ = 0;          ///< nodes per axis
-  int cells_x_ = 0, cells_y_ = 0;
-  double inv_hx_ = 1, inv_hy_ = 1;
+  std::array<int, kDim> nodes_per_axis_{};  ///< the node lattice's nodes along each axis
+  std::array<int, kDim> cells_per_axis_{};  ///< its cells: nodes_per_axis_ - 1
+  std::array<double, kDim> inv_h_{};        ///< 1 / cell size, per axis
+  /// Nodes from one node row to the next: node (i, j) is i + j * node_row_stride().
+  std::size_t node_row_stride() const { return static_cast<std::size_t>(nodes_per_axis_[0]); }
   double gimp_margin_ = 0;  ///< 1 for uGIMP (a particle may leave the region by its half-size lp), 0 for linear
   bool keys_fit_int32_ = false;  ///< every cell_key fits 32 bits (cell_keys computes in them)
   std::size_t nodes_ = 0;

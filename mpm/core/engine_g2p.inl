@@ -45,8 +45,8 @@ void Engine::g2p_particle(std::size_t c, std::size_t k, G2pAlso also, double* ba
       dys[a] = stencil_offset_[2 * k + 1] + a * grid_.hy;
     }
   const GridSums sums =
-      gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]), static_cast<std::size_t>(nx_), w,
-                                dxs, dys, also == G2pAlso::StrainIncrements || kBilinearAffine);
+      gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]), node_row_stride(), w, dxs, dys,
+                                also == G2pAlso::StrainIncrements || kBilinearAffine);
   if (also == G2pAlso::StrainIncrements) sums.L.strain_increment(dt_, &dstrain_[3 * k]);
   const double vgx = sums.v[0], vgy = sums.v[1];
   const double vx = Affine ? vgx : transfer_.particle_velocity(cur_.velocity[0][p], vgx, sums.a[0], dt_);
@@ -86,10 +86,10 @@ void Engine::g2p_run(std::size_t c, std::size_t k, G2pAlso also, double* band) {
       dxs4[a] = ox + a * grid_.hx;
       dys4[a] = oy + a * grid_.hy;
     }
-    sums = gather_updated_affine4(updated_.data(), first, static_cast<std::size_t>(nx_), w4, dxs4, dys4,
+    sums = gather_updated_affine4(updated_.data(), first, node_row_stride(), w4, dxs4, dys4,
                                   also == G2pAlso::StrainIncrements || kBilinearAffine);
   } else {
-    sums = gather_updated4(updated_.data(), first, static_cast<std::size_t>(nx_), w4,
+    sums = gather_updated4(updated_.data(), first, node_row_stride(), w4,
                            also == G2pAlso::StrainIncrements);
   }
   if (also == G2pAlso::StrainIncrements)
@@ -141,11 +141,12 @@ void Engine::new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& s
   const double C[4] = {sums.L.d_dx[0], sums.L.d_dy[0], sums.L.d_dx[1], sums.L.d_dy[1]};
   const double x0 = cur_.position[0][p], y0 = cur_.position[1][p];
   const double x = x0 + dt_ * vgx, y = y0 + dt_ * vgy;  // place_particle's x^(n+1)
-  affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_hx_, (y - grid_.y0) * inv_hy_, cells_x_ - 1, cells_y_ - 1,
-                   grid_.hx, grid_.hy, &nxt_.affine[4 * k]);
+  const int max_i = cells_per_axis_[0] - 1, max_j = cells_per_axis_[1] - 1;
+  affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_h_[0], (y - grid_.y0) * inv_h_[1], max_i, max_j, grid_.hx,
+                   grid_.hy, &nxt_.affine[4 * k]);
   if (at_old)
-    affine_matrix_at(Shape{}, B, C, (x0 - grid_.x0) * inv_hx_, (y0 - grid_.y0) * inv_hy_, cells_x_ - 1,
-                     cells_y_ - 1, grid_.hx, grid_.hy, at_old);
+    affine_matrix_at(Shape{}, B, C, (x0 - grid_.x0) * inv_h_[0], (y0 - grid_.y0) * inv_h_[1], max_i, max_j, grid_.hx,
+                     grid_.hy, at_old);
 }
 
 /// g2p's last part for the particle at iteration index k (storage index p): x += dt sum N v_new and the
@@ -236,14 +237,15 @@ void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Dou
 
 /// cell_key of four positions inside the mesh region, in lanes (32-bit keys: keys_fit_int32_).
 Long4 Engine::cell_keys(Double4 x, Double4 y) const {
-  const Double4 sx = (x - splat4(grid_.x0)) * splat4(inv_hx_), sy = (y - splat4(grid_.y0)) * splat4(inv_hy_);
+  const Double4 sx = (x - splat4(grid_.x0)) * splat4(inv_h_[0]), sy = (y - splat4(grid_.y0)) * splat4(inv_h_[1]);
   const auto clamp = [](Int4 v, int hi) {
     v = v < 0 ? Int4{0, 0, 0, 0} : v;
     return v > hi ? Int4{hi, hi, hi, hi} : v;
   };
-  const Int4 i = clamp(__builtin_convertvector(sx, Int4), cells_x_ - 1);  // truncation, as static_cast<int>
-  const Int4 j = clamp(__builtin_convertvector(sy, Int4), cells_y_ - 1);
-  Int4 key = 4 * (i + j * cells_x_);
+  // Truncation, as static_cast<int>.
+  const Int4 i = clamp(__builtin_convertvector(sx, Int4), cells_per_axis_[0] - 1);
+  const Int4 j = clamp(__builtin_convertvector(sy, Int4), cells_per_axis_[1] - 1);
+  Int4 key = 4 * (i + j * cells_per_axis_[0]);
   if (grid_.cell_type == CellType::Gimp16) {  // the quadrant, GimpShape::nearest_node(s) > i
     const Double4 half = splat4(0.5);
     key += (__builtin_convertvector(sx + half, Int4) > i) & 1;

@@ -89,13 +89,13 @@ void Engine::cut_chunks() {
   const auto chunks = static_cast<std::ptrdiff_t>(chunks_);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    int imin = cells_x_, imax = -1, jmin = cells_y_, jmax = -1;
+    int imin = cells_per_axis_[0], imax = -1, jmin = cells_per_axis_[1], jmax = -1;
     std::int64_t previous_cell = kRemoved;  // a cell's particles are consecutive: one division per cell
     for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
       const std::int64_t cell = cell_of(cur_.key[order_[k]]);
       if (cell == previous_cell) continue;
       previous_cell = cell;
-      const int i = static_cast<int>(cell % cells_x_), j = static_cast<int>(cell / cells_x_);
+      const int i = static_cast<int>(cell % cells_per_axis_[0]), j = static_cast<int>(cell / cells_per_axis_[0]);
       imin = std::min(imin, i);
       imax = std::max(imax, i);
       jmin = std::min(jmin, j);
@@ -107,16 +107,16 @@ void Engine::cut_chunks() {
       continue;
     }
     b.i0 = std::max(imin - 1, 0);
-    b.i1 = std::min(imax + 3, nx_);
+    b.i1 = std::min(imax + 3, nodes_per_axis_[0]);
     b.j0 = std::max(jmin - 1, 0);
-    b.j1 = std::min(jmax + 3, ny_);
+    b.j1 = std::min(jmax + 3, nodes_per_axis_[1]);
   }
   // The active node box: the union of the bands.
   bi0_ = bj0_ = 0;
   bi1_ = bj1_ = 0;
   if (chunks_ > 0) {
-    bi0_ = nx_;
-    bj0_ = ny_;
+    bi0_ = nodes_per_axis_[0];
+    bj0_ = nodes_per_axis_[1];
     for (std::size_t c = 0; c < chunks_; ++c) {
       if (bands_[c].size() == 0) continue;
       bi0_ = std::min(bi0_, bands_[c].i0);

@@ -41,7 +41,7 @@ void Engine::scatter_particle(std::size_t k, double* g, std::size_t row_stride, 
 template <class Shape, bool Affine>
 bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
   constexpr int W = Shape::kWidth;
-  const double ihx = inv_hx_, ihy = inv_hy_;
+  const double ihx = inv_h_[0], ihy = inv_h_[1];
   // Sorted by key: the fourth particle on has the first one's key only if the four between do. Runs
   // only with 4-double registers (stencil_runs_) and in decks without surface tractions (whose
   // particles p2g maps one by one), so that every particle the one-particle kernels of p2g and g2p see
@@ -53,7 +53,7 @@ bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
   const double x = cur_.position[0][p], y = cur_.position[1][p];
   int bi = 0, bj = 0;
   Shape::eval_xy((x - grid_.x0) * ihx, (y - grid_.y0) * ihy, cur_.half_size[0][p], cur_.half_size[1][p],
-                 cells_x_ - 1, cells_y_ - 1, ihx, ihy, bi, bj, &weights_[4 * W * k]);
+                 cells_per_axis_[0] - 1, cells_per_axis_[1] - 1, ihx, ihy, bi, bj, &weights_[4 * W * k]);
   set_stencil(c, k, bi, bj, -1);
   if constexpr (Affine) {  // APIC: the first node's offset and the affine weights, for this step's phases
     double* offset = &stencil_offset_[2 * k];
@@ -75,16 +75,16 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
   Double4 sx = splat4(0.0), sy = sx, lx = sx, ly = sx;
   for (int l = 0; l < kRunLanes; ++l) {
     const std::uint32_t p = order_[k + static_cast<std::size_t>(l)];
-    sx[l] = (cur_.position[0][p] - grid_.x0) * inv_hx_;
-    sy[l] = (cur_.position[1][p] - grid_.y0) * inv_hy_;
+    sx[l] = (cur_.position[0][p] - grid_.x0) * inv_h_[0];
+    sy[l] = (cur_.position[1][p] - grid_.y0) * inv_h_[1];
     lx[l] = cur_.half_size[0][p];
     ly[l] = cur_.half_size[1][p];
-    Shape::first_node(sx[l], sy[l], cells_x_ - 1, cells_y_ - 1, bi[l], bj[l]);
+    Shape::first_node(sx[l], sy[l], cells_per_axis_[0] - 1, cells_per_axis_[1] - 1, bi[l], bj[l]);
     if (bi[l] != bi[0] || bj[l] != bj[0]) return false;
   }
   Double4 w[W], dw[W];
   double* wk = &weights_[4 * W * k];
-  eval_run_axis(Shape{}, sx, lx, bi[0], inv_hx_, w, dw);
+  eval_run_axis(Shape{}, sx, lx, bi[0], inv_h_[0], w, dw);
   for (int a = 0; a < W; ++a) {
     store4(wk + 4 * a, w[a]);
     store4(wk + 4 * (2 * W + a), dw[a]);
@@ -95,7 +95,7 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
     affine_weights_run_axis(Shape{}, w, dw, ox, grid_.hx, a);
     for (int e = 0; e < W; ++e) store4(&affine_weights_[2 * W * k + 4 * e], a[e]);
   }
-  eval_run_axis(Shape{}, sy, ly, bj[0], inv_hy_, w, dw);
+  eval_run_axis(Shape{}, sy, ly, bj[0], inv_h_[1], w, dw);
   for (int a = 0; a < W; ++a) {
     store4(wk + 4 * (W + a), w[a]);
     store4(wk + 4 * (3 * W + a), dw[a]);
@@ -116,7 +116,7 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
 /// Iteration index k's stencil: first node (bi, bj), its place in the chunk's band, its lane in a run.
 void Engine::set_stencil(std::size_t c, std::size_t k, int bi, int bj, std::int32_t lane) {
   run_lane_[k] = lane;
-  base_[k] = bi + bj * nx_;
+  base_[k] = bi + bj * nodes_per_axis_[0];
   const Band& band = bands_[c];
   local_[k] = static_cast<std::int32_t>(5 * ((bj - band.j0) * (band.i1 - band.i0) + (bi - band.i0)));
 }

@@ -44,26 +44,34 @@ void ParticleArrays::resize(std::size_t n) {
 
 Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(deck.grid) {
   const Analysis& an = deck.analysis;
-  nx_ = grid_.nodes_x;
-  ny_ = grid_.nodes_y;
-  if (nx_ < 2 || ny_ < 2 || !(grid_.hx > 0) || !(grid_.hy > 0))
-    throw common::InputError("mesh", "the node lattice needs at least 2 x 2 nodes and a positive cell size");
-  cells_x_ = nx_ - 1;
-  cells_y_ = ny_ - 1;
-  inv_hx_ = 1.0 / grid_.hx;
-  inv_hy_ = 1.0 / grid_.hy;
-  nodes_ = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_);
+  // The deck's grid per axis.
+  const int nodes[kDim] = {grid_.nodes_x, grid_.nodes_y};
+  const double h[kDim] = {grid_.hx, grid_.hy}, origin[kDim] = {grid_.x0, grid_.y0};
+  const double region_min[kDim] = {grid_.xmin, grid_.ymin}, region_max[kDim] = {grid_.xmax, grid_.ymax};
+  for (int d = 0; d < kDim; ++d)
+    if (nodes[d] < 2 || !(h[d] > 0))
+      throw common::InputError("mesh", "the node lattice needs at least 2 x 2 nodes and a positive cell size");
+  nodes_ = 1;
+  std::size_t cells = 1;
+  for (int d = 0; d < kDim; ++d) {
+    nodes_per_axis_[d] = nodes[d];
+    cells_per_axis_[d] = nodes[d] - 1;
+    inv_h_[d] = 1.0 / h[d];
+    nodes_ *= static_cast<std::size_t>(nodes[d]);
+    cells *= static_cast<std::size_t>(cells_per_axis_[d]);
+  }
   const bool gimp = grid_.cell_type == CellType::Gimp16;
   gimp_margin_ = gimp ? 1.0 : 0.0;
   // cell_keys computes in 32 bits: the largest key is below 4 x cells.
-  keys_fit_int32_ = 4.0 * cells_x_ * cells_y_ <= std::numeric_limits<std::int32_t>::max();
+  keys_fit_int32_ = 4.0 * static_cast<double>(cells) <= std::numeric_limits<std::int32_t>::max();
   if (gimp) {
     // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
     const double tol = 1e-9;
-    if (grid_.xmin - grid_.x0 < grid_.hx * (1 - tol) || grid_.ymin - grid_.y0 < grid_.hy * (1 - tol) ||
-        grid_.x0 + (nx_ - 1) * grid_.hx - grid_.xmax < grid_.hx * (1 - tol) ||
-        grid_.y0 + (ny_ - 1) * grid_.hy - grid_.ymax < grid_.hy * (1 - tol))
-      throw common::InputError("mesh", "ED2Q16G cells need a ring of halo nodes around the cells that hold particles");
+    for (int d = 0; d < kDim; ++d)
+      if (region_min[d] - origin[d] < h[d] * (1 - tol) ||
+          origin[d] + (nodes[d] - 1) * h[d] - region_max[d] < h[d] * (1 - tol))
+        throw common::InputError("mesh",
+                                 "ED2Q16G cells need a ring of halo nodes around the cells that hold particles");
   }
 
   scheme_ = an.scheme;
@@ -74,7 +82,7 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   if (!(damping_ >= 0.0 && damping_ < 1.0))
     throw common::InputError("analysis.damping.damping_factor", "expected a number in [0, 1), got " + num(damping_));
   body_force_ = BodyForce{an.gravity, deck.base_acceleration};
-  loads_ = ExternalLoads(deck, static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_));
+  loads_ = ExternalLoads(deck, nodes_);
   smoothing_ = parse_stress_smoothing(an.stress_smoothing);
   step_index_ = deck.first_step;
   threads_ = threads > 0 ? threads : omp_get_max_threads();
@@ -169,7 +177,7 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
     if (transfer_.affine())
       for (std::size_t p = 0; p < n; ++p) std::copy_n(deck.particle_affine[p].data(), 4, &cur_.affine[4 * p]);
   }
-  std::vector<std::uint32_t> per_cell(static_cast<std::size_t>(cells_x_) * cells_y_, 0);
+  std::vector<std::uint32_t> per_cell(cells, 0);
   for (std::size_t p = 0; p < n; ++p) {
     const ParticleRecord& r = deck.particles[p];
     const std::string who = "particle " + std::to_string(r.id);
@@ -243,12 +251,12 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   }
   order_.reserve(n);
   sorted_.resize(n);
-  bucket_.resize(4 * static_cast<std::size_t>(cells_x_) * cells_y_ + 1);
+  bucket_.resize(4 * cells + 1);
   const std::size_t max_chunks = n / kChunkParticles + 2;
   chunk_.resize(max_chunks + 1);
   bands_.resize(max_chunks);
-  row_sums_.resize(static_cast<std::size_t>(threads_) * 5 * static_cast<std::size_t>(nx_));
-  row_first_chunk_.resize(static_cast<std::size_t>(ny_));
+  row_sums_.resize(static_cast<std::size_t>(threads_) * 5 * node_row_stride());
+  row_first_chunk_.resize(static_cast<std::size_t>(nodes_per_axis_[1]));
   local_.resize(n);
   mass_.assign(nodes_, 0.0);
   momentum_.assign(2 * nodes_, 0.0);

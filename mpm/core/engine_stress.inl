@@ -83,14 +83,14 @@ void Engine::compute_strain_increments(std::size_t c) {
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const auto first = static_cast<std::size_t>(base_[k]);
     if (run_lane_[k] == 0) {
-      const VelocityGradient4 L = gather_velocity_gradient4(velocity_.data(), 2, first, static_cast<std::size_t>(nx_),
+      const VelocityGradient4 L = gather_velocity_gradient4(velocity_.data(), 2, first, node_row_stride(),
                                                             StencilWeights4<W>(&weights_[4 * W * k]));
       for (int l = 0; l < kRunLanes; ++l) L.lane(l).strain_increment(dt_, &dstrain_[3 * (k + l)]);
       k += kRunLanes - 1;
       continue;
     }
     const StencilWeights<W> w(&weights_[4 * W * k]);  // not in a run: a block of its own
-    gather_velocity_gradient(velocity_.data(), 2, first, static_cast<std::size_t>(nx_), w)
+    gather_velocity_gradient(velocity_.data(), 2, first, node_row_stride(), w)
         .strain_increment(dt_, &dstrain_[3 * k]);
   }
 }
@@ -143,7 +143,7 @@ void Engine::nodal_remedy_row(int j) {
   double* s = thread_row_sums();
   sum_bands_of_row(j, 4, s);
   for (int i = bi0_; i < bi1_; ++i, s += 5) {
-    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * nx_;
+    const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     const double weight = proj.volume_weighted ? s[3] : mass_[n];
     const double inv_w = weight > (proj.volume_weighted ? 0.0 : mass_tolerance_) ? 1.0 / weight : 0.0;
     for (int f = 0; f < proj.values; ++f) nodal_remedy_[3 * n + f] = s[f] * inv_w;
@@ -160,7 +160,7 @@ void Engine::gather_remedy_values(std::size_t c) {
     const double *wx = sw.wx, *wy = sw.wy;
     double e[3] = {0, 0, 0};
     std::size_t node_row = static_cast<std::size_t>(base_[k]);
-    for (int b = 0; b < W; ++b, node_row += static_cast<std::size_t>(nx_)) {
+    for (int b = 0; b < W; ++b, node_row += node_row_stride()) {
       const double* en = &nodal_remedy_[3 * node_row];
       for (int a = 0; a < W; ++a, en += 3) {
         const double N = wx[a] * wy[b];

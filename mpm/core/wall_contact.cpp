@@ -37,8 +37,7 @@ void Engine::set_up_wall_contacts() {
     if (c < 0 || !constraints_[static_cast<std::size_t>(c)].one_sided()) return nullptr;
     return &constraints_[static_cast<std::size_t>(c)];
   };
-  const int lattice[2] = {nx_, ny_};
-  const auto row = static_cast<std::size_t>(nx_);
+  const auto row = node_row_stride();
   for (std::size_t node = 0; node < nodes_; ++node) {
     const NodeConstraint* nc = contact(node);
     if (!nc) continue;
@@ -49,7 +48,7 @@ void Engine::set_up_wall_contacts() {
     for (;;) {
       int next[2] = {at[0], at[1]};
       next[dn] += inward;
-      if (next[dn] < 0 || next[dn] >= lattice[dn]) break;
+      if (next[dn] < 0 || next[dn] >= nodes_per_axis_[dn]) break;
       const NodeConstraint* o = contact(static_cast<std::size_t>(next[0]) + static_cast<std::size_t>(next[1]) * row);
       if (!o || o->friction_dir != dn || o->sign_n != nc->sign_n) break;
       at[dn] = next[dn];
@@ -63,12 +62,10 @@ void Engine::find_wall_contacts() {
   const auto cell_of_particle = [&](std::uint32_t p) { return cell_of(cur_.key[p]); };
   const double h[2] = {grid_.hx, grid_.hy};
   const double origin[2] = {grid_.x0, grid_.y0};
-  const int cells[2] = {cells_x_, cells_y_};
   for (const auto& [node, c, face] : contact_nodes_) {
     const NodeConstraint& nc = constraints_[c];
     const int dn = nc.friction_dir, dt = 1 - dn;
-    const int at[2] = {static_cast<int>(node % static_cast<std::size_t>(nx_)),
-                       static_cast<int>(node / static_cast<std::size_t>(nx_))};
+    const int at[2] = {static_cast<int>(node % node_row_stride()), static_cast<int>(node / node_row_stride())};
     const double wall = origin[dn] + face * h[dn];
     // The cells that share the node and those between it and the wall face (a node behind the face is
     // inside the wall): a particle on the inner side whose domain reaches the face, or one that has passed
@@ -76,11 +73,12 @@ void Engine::find_wall_contacts() {
     bool touching = false;
     for (int across = std::min(at[dn], face) - 1; across <= std::max(at[dn], face) && !touching; ++across) {
       for (int side = at[dt] - 1; side <= at[dt] && !touching; ++side) {
-        if (across < 0 || across >= cells[dn] || side < 0 || side >= cells[dt]) continue;
+        if (across < 0 || across >= cells_per_axis_[dn] || side < 0 || side >= cells_per_axis_[dt]) continue;
         int cell[2];
         cell[dn] = across;
         cell[dt] = side;
-        const std::int64_t index = static_cast<std::int64_t>(cell[0]) + static_cast<std::int64_t>(cell[1]) * cells_x_;
+        const std::int64_t index =
+            static_cast<std::int64_t>(cell[0]) + static_cast<std::int64_t>(cell[1]) * cells_per_axis_[0];
         // order_ is sorted by key, i.e. by cell first: the cell's particles are one run of it.
         const auto first = std::lower_bound(order_.begin(), order_.end(), index,
                                             [&](std::uint32_t p, std::int64_t k) { return cell_of_particle(p) < k; });
