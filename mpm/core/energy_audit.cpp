@@ -29,8 +29,8 @@ EnergyAudit::EnergyAudit(const Deck& deck)
   if (g > 0) {  // the grid's lowest corner along g: the largest g . x over the corners
     const Grid& grid = deck.grid;
     lowest_ = std::numeric_limits<double>::infinity();
-    for (const double x : {grid.xmin, grid.xmax})
-      for (const double y : {grid.ymin, grid.ymax}) lowest_ = std::min(lowest_, -(gravity_.x() * x + gravity_.y() * y) / g);
+    for (const double x : {grid.region_min[0], grid.region_max[0]})
+      for (const double y : {grid.region_min[1], grid.region_max[1]}) lowest_ = std::min(lowest_, -(gravity_.x() * x + gravity_.y() * y) / g);
   }
 }
 

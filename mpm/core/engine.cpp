@@ -22,7 +22,7 @@ namespace mpm::core {
 // The particle's sort key (engine_order.cpp), here for g2p to inline it.
 std::int64_t Engine::cell_key(double x, double y) const {
   // Truncation, then the clamp below: the same as floor + clamp, without the floor calls.
-  const double sx = (x - grid_.x0) * inv_h_[0], sy = (y - grid_.y0) * inv_h_[1];
+  const double sx = (x - grid_.origin[0]) * inv_h_[0], sy = (y - grid_.origin[1]) * inv_h_[1];
   int i = static_cast<int>(sx);
   int j = static_cast<int>(sy);
   i = std::clamp(i, 0, cells_per_axis_[0] - 1);

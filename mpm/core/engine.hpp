@@ -11,6 +11,7 @@
 // the grid (the rows and columns its stencils reach), and the bands are summed in chunk order: results
 // are bit-identical for ANY thread count.
 // Per-cell work (the cell remedies of stress_remedy.hpp) stays inside one chunk.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -188,6 +189,12 @@ class Engine {
   std::array<double, kDim> inv_h_{};        ///< 1 / cell size, per axis
   /// Nodes from one node row to the next: node (i, j) is i + j * node_row_stride().
   std::size_t node_row_stride() const { return static_cast<std::size_t>(nodes_per_axis_[0]); }
+  /// The shortest cell side, m (the CFL length; the farthest a particle may move in a step).
+  double smallest_cell_side() const {
+    double h = grid_.spacing[0];
+    for (int d = 1; d < kDim; ++d) h = std::min(h, grid_.spacing[d]);
+    return h;
+  }
   double gimp_margin_ = 0;  ///< 1 for uGIMP (a particle may leave the region by its half-size lp), 0 for linear
   bool keys_fit_int32_ = false;  ///< every cell_key fits 32 bits (cell_keys computes in them)
   std::size_t nodes_ = 0;

@@ -41,8 +41,8 @@ void Engine::g2p_particle(std::size_t c, std::size_t k, G2pAlso also, double* ba
   double dxs[W] = {}, dys[W] = {};                   // APIC: node minus particle, per axis
   if constexpr (Affine)
     for (int a = 0; a < W; ++a) {
-      dxs[a] = stencil_offset_[2 * k] + a * grid_.hx;
-      dys[a] = stencil_offset_[2 * k + 1] + a * grid_.hy;
+      dxs[a] = stencil_offset_[2 * k] + a * grid_.spacing[0];
+      dys[a] = stencil_offset_[2 * k + 1] + a * grid_.spacing[1];
     }
   const GridSums sums =
       gather_updated<W, Affine>(updated_.data(), static_cast<std::size_t>(base_[k]), node_row_stride(), w, dxs, dys,
@@ -83,8 +83,8 @@ void Engine::g2p_run(std::size_t c, std::size_t k, G2pAlso also, double* band) {
       oy[l] = stencil_offset_[2 * (k + l) + 1];
     }
     for (int a = 0; a < W; ++a) {
-      dxs4[a] = ox + a * grid_.hx;
-      dys4[a] = oy + a * grid_.hy;
+      dxs4[a] = ox + a * grid_.spacing[0];
+      dys4[a] = oy + a * grid_.spacing[1];
     }
     sums = gather_updated_affine4(updated_.data(), first, node_row_stride(), w4, dxs4, dys4,
                                   also == G2pAlso::StrainIncrements || kBilinearAffine);
@@ -142,11 +142,13 @@ void Engine::new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& s
   const double x0 = cur_.position[0][p], y0 = cur_.position[1][p];
   const double x = x0 + dt_ * vgx, y = y0 + dt_ * vgy;  // place_particle's x^(n+1)
   const int max_i = cells_per_axis_[0] - 1, max_j = cells_per_axis_[1] - 1;
-  affine_matrix_at(Shape{}, B, C, (x - grid_.x0) * inv_h_[0], (y - grid_.y0) * inv_h_[1], max_i, max_j, grid_.hx,
-                   grid_.hy, &nxt_.affine[4 * k]);
+  const auto& origin = grid_.origin;
+  const auto& h = grid_.spacing;
+  affine_matrix_at(Shape{}, B, C, (x - origin[0]) * inv_h_[0], (y - origin[1]) * inv_h_[1], max_i, max_j, h[0], h[1],
+                   &nxt_.affine[4 * k]);
   if (at_old)
-    affine_matrix_at(Shape{}, B, C, (x0 - grid_.x0) * inv_h_[0], (y0 - grid_.y0) * inv_h_[1], max_i, max_j, grid_.hx,
-                     grid_.hy, at_old);
+    affine_matrix_at(Shape{}, B, C, (x0 - origin[0]) * inv_h_[0], (y0 - origin[1]) * inv_h_[1], max_i, max_j, h[0],
+                     h[1], at_old);
 }
 
 /// g2p's last part for the particle at iteration index k (storage index p): x += dt sum N v_new and the
@@ -155,7 +157,7 @@ void Engine::new_affine_matrix(std::size_t k, std::uint32_t p, const GridSums& s
 void Engine::place_particle(std::size_t c, std::size_t k, std::uint32_t p, double vgx, double vgy, double vx,
                             double vy) {
   const double x = cur_.position[0][p] + dt_ * vgx, y = cur_.position[1][p] + dt_ * vgy;
-  const double h = std::min(grid_.hx, grid_.hy);
+  const double h = smallest_cell_side();
   nxt_.position[0][k] = x;
   nxt_.position[1][k] = y;
   nxt_.displacement[0][k] = cur_.displacement[0][p] + dt_ * vgx;
@@ -167,12 +169,13 @@ void Engine::place_particle(std::size_t c, std::size_t k, std::uint32_t p, doubl
   // drift past it by a fraction of lp). Linear particles must stay inside the region. The test is
   // false for a NaN coordinate, so with a speed within one cell per step it implies finite values;
   // inside the region itself (most particles) the margin (>= 0) is not needed.
+  const auto& lo = grid_.region_min;
+  const auto& hi = grid_.region_max;
   const auto within = [&](double mx, double my) {
-    return x >= grid_.xmin - mx && x <= grid_.xmax + mx && y >= grid_.ymin - my && y <= grid_.ymax + my;
+    return x >= lo[0] - mx && x <= hi[0] + mx && y >= lo[1] - my && y <= hi[1] + my;
   };
-  const bool on_grid =
-      within(0.0, 0.0) ||
-      within(gimp_margin_ * cur_.half_size[0][p] * grid_.hx, gimp_margin_ * cur_.half_size[1][p] * grid_.hy);
+  const bool on_grid = within(0.0, 0.0) || within(gimp_margin_ * cur_.half_size[0][p] * grid_.spacing[0],
+                                                  gimp_margin_ * cur_.half_size[1][p] * grid_.spacing[1]);
   const auto place_on_grid = [&] {
     nxt_.key[k] = cell_key(x, y);
     merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
@@ -213,8 +216,10 @@ void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Dou
   const Double4 dt = splat4(dt_);
   const Double4 x = x0 + dt * vgx, y = y0 + dt * vgy;
   const Double4 speed = constitutive::sqrt_each(vx * vx + vy * vy);
-  const auto fast = (x >= splat4(grid_.xmin)) & (x <= splat4(grid_.xmax)) & (y >= splat4(grid_.ymin)) &
-                    (y <= splat4(grid_.ymax)) & (speed * dt <= splat4(std::min(grid_.hx, grid_.hy)));
+  const auto& lo = grid_.region_min;
+  const auto& hi = grid_.region_max;
+  const auto fast = (x >= splat4(lo[0])) & (x <= splat4(hi[0])) & (y >= splat4(lo[1])) & (y <= splat4(hi[1])) &
+                    (speed * dt <= splat4(smallest_cell_side()));
   if (!(fast[0] & fast[1] & fast[2] & fast[3]) || !keys_fit_int32_) {
     for (int l = 0; l < kRunLanes; ++l) place_particle(c, k + l, p[l], vgx[l], vgy[l], vx[l], vy[l]);
     return;
@@ -237,7 +242,8 @@ void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Dou
 
 /// cell_key of four positions inside the mesh region, in lanes (32-bit keys: keys_fit_int32_).
 Long4 Engine::cell_keys(Double4 x, Double4 y) const {
-  const Double4 sx = (x - splat4(grid_.x0)) * splat4(inv_h_[0]), sy = (y - splat4(grid_.y0)) * splat4(inv_h_[1]);
+  const Double4 sx = (x - splat4(grid_.origin[0])) * splat4(inv_h_[0]);
+  const Double4 sy = (y - splat4(grid_.origin[1])) * splat4(inv_h_[1]);
   const auto clamp = [](Int4 v, int hi) {
     v = v < 0 ? Int4{0, 0, 0, 0} : v;
     return v > hi ? Int4{hi, hi, hi, hi} : v;

@@ -52,15 +52,15 @@ bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
   const std::uint32_t p = order_[k];
   const double x = cur_.position[0][p], y = cur_.position[1][p];
   int bi = 0, bj = 0;
-  Shape::eval_xy((x - grid_.x0) * ihx, (y - grid_.y0) * ihy, cur_.half_size[0][p], cur_.half_size[1][p],
+  Shape::eval_xy((x - grid_.origin[0]) * ihx, (y - grid_.origin[1]) * ihy, cur_.half_size[0][p], cur_.half_size[1][p],
                  cells_per_axis_[0] - 1, cells_per_axis_[1] - 1, ihx, ihy, bi, bj, &weights_[4 * W * k]);
   set_stencil(c, k, bi, bj, -1);
   if constexpr (Affine) {  // APIC: the first node's offset and the affine weights, for this step's phases
     double* offset = &stencil_offset_[2 * k];
-    offset[0] = grid_.x0 + bi * grid_.hx - x;
-    offset[1] = grid_.y0 + bj * grid_.hy - y;
-    affine_weights(Shape{}, StencilWeights<W>(&weights_[4 * W * k]), offset[0], offset[1], grid_.hx, grid_.hy,
-                   &affine_weights_[2 * W * k]);
+    offset[0] = grid_.origin[0] + bi * grid_.spacing[0] - x;
+    offset[1] = grid_.origin[1] + bj * grid_.spacing[1] - y;
+    affine_weights(Shape{}, StencilWeights<W>(&weights_[4 * W * k]), offset[0], offset[1], grid_.spacing[0],
+                   grid_.spacing[1], &affine_weights_[2 * W * k]);
   }
   return false;
 }
@@ -75,8 +75,8 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
   Double4 sx = splat4(0.0), sy = sx, lx = sx, ly = sx;
   for (int l = 0; l < kRunLanes; ++l) {
     const std::uint32_t p = order_[k + static_cast<std::size_t>(l)];
-    sx[l] = (cur_.position[0][p] - grid_.x0) * inv_h_[0];
-    sy[l] = (cur_.position[1][p] - grid_.y0) * inv_h_[1];
+    sx[l] = (cur_.position[0][p] - grid_.origin[0]) * inv_h_[0];
+    sy[l] = (cur_.position[1][p] - grid_.origin[1]) * inv_h_[1];
     lx[l] = cur_.half_size[0][p];
     ly[l] = cur_.half_size[1][p];
     Shape::first_node(sx[l], sy[l], cells_per_axis_[0] - 1, cells_per_axis_[1] - 1, bi[l], bj[l]);
@@ -91,8 +91,9 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
   }
   Double4 ox = splat4(0.0), oy = splat4(0.0), a[W];  // APIC: first node minus particle, affine weights of an axis
   if constexpr (Affine) {
-    for (int l = 0; l < kRunLanes; ++l) ox[l] = grid_.x0 + bi[0] * grid_.hx - cur_.position[0][order_[k + l]];
-    affine_weights_run_axis(Shape{}, w, dw, ox, grid_.hx, a);
+    for (int l = 0; l < kRunLanes; ++l)
+      ox[l] = grid_.origin[0] + bi[0] * grid_.spacing[0] - cur_.position[0][order_[k + l]];
+    affine_weights_run_axis(Shape{}, w, dw, ox, grid_.spacing[0], a);
     for (int e = 0; e < W; ++e) store4(&affine_weights_[2 * W * k + 4 * e], a[e]);
   }
   eval_run_axis(Shape{}, sy, ly, bj[0], inv_h_[1], w, dw);
@@ -101,8 +102,9 @@ bool Engine::evaluate_run(std::size_t c, std::size_t k) {
     store4(wk + 4 * (3 * W + a), dw[a]);
   }
   if constexpr (Affine) {
-    for (int l = 0; l < kRunLanes; ++l) oy[l] = grid_.y0 + bj[0] * grid_.hy - cur_.position[1][order_[k + l]];
-    affine_weights_run_axis(Shape{}, w, dw, oy, grid_.hy, a);
+    for (int l = 0; l < kRunLanes; ++l)
+      oy[l] = grid_.origin[1] + bj[0] * grid_.spacing[1] - cur_.position[1][order_[k + l]];
+    affine_weights_run_axis(Shape{}, w, dw, oy, grid_.spacing[1], a);
     for (int e = 0; e < W; ++e) store4(&affine_weights_[2 * W * k + 4 * (W + e)], a[e]);
     for (int l = 0; l < kRunLanes; ++l) {
       stencil_offset_[2 * (k + l)] = ox[l];

@@ -44,10 +44,11 @@ void ParticleArrays::resize(std::size_t n) {
 
 Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(deck.grid) {
   const Analysis& an = deck.analysis;
-  // The deck's grid per axis.
-  const int nodes[kDim] = {grid_.nodes_x, grid_.nodes_y};
-  const double h[kDim] = {grid_.hx, grid_.hy}, origin[kDim] = {grid_.x0, grid_.y0};
-  const double region_min[kDim] = {grid_.xmin, grid_.ymin}, region_max[kDim] = {grid_.xmax, grid_.ymax};
+  if (grid_.dim != kDim)
+    throw common::InputError("mesh", "a " + std::to_string(grid_.dim) + "D grid: this engine runs " +
+                                         std::to_string(kDim) + "D problems only");
+  const auto& nodes = grid_.nodes_per_axis;
+  const auto& h = grid_.spacing;
   for (int d = 0; d < kDim; ++d)
     if (nodes[d] < 2 || !(h[d] > 0))
       throw common::InputError("mesh", "the node lattice needs at least 2 x 2 nodes and a positive cell size");
@@ -68,8 +69,8 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
     // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
     const double tol = 1e-9;
     for (int d = 0; d < kDim; ++d)
-      if (region_min[d] - origin[d] < h[d] * (1 - tol) ||
-          origin[d] + (nodes[d] - 1) * h[d] - region_max[d] < h[d] * (1 - tol))
+      if (grid_.region_min[d] - grid_.origin[d] < h[d] * (1 - tol) ||
+          grid_.origin[d] + (nodes[d] - 1) * h[d] - grid_.region_max[d] < h[d] * (1 - tol))
         throw common::InputError("mesh",
                                  "ED2Q16G cells need a ring of halo nodes around the cells that hold particles");
   }
@@ -104,21 +105,26 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   }
   dt_ = an.dt;
   if (an.cfl > 0) {
-    const double auto_dt = an.cfl * std::min(grid_.hx, grid_.hy) / max_wave_speed;
+    const double auto_dt = an.cfl * smallest_cell_side() / max_wave_speed;
     dt_ = (an.dt > 0) ? std::min(an.dt, auto_dt) : auto_dt;
   }
   if (!(dt_ > 0) || !std::isfinite(dt_)) throw common::InputError("analysis.dt", "expected a time step > 0");
-  courant_number_ = dt_ * max_wave_speed / std::min(grid_.hx, grid_.hy);
+  courant_number_ = dt_ * max_wave_speed / smallest_cell_side();
 
   // Small-mass cutoff (on bilinear cells, where particles read unweighted gradients of the updated grid
   // velocity: USL's strain increment, APIC's C_p): a fraction of a full node of the lightest material.
   double lightest = std::numeric_limits<double>::infinity();
   for (const auto& spec : deck.materials) lightest = std::min(lightest, spec.density);
   const bool reads_updated_gradients = !gimp && (scheme_ == Scheme::USL || transfer_.affine());
-  small_mass_ = reads_updated_gradients ? kSmallMassFraction * lightest * grid_.hx * grid_.hy : 0.0;
+  // rho h^d, multiplied left to right (rho hx hy in 2D, as before the axes).
+  const auto times_cell_volume = [&](double v) {
+    for (int d = 0; d < kDim; ++d) v *= h[d];
+    return v;
+  };
+  small_mass_ = reads_updated_gradients ? times_cell_volume(kSmallMassFraction * lightest) : 0.0;
   // CB-Geo's absolute 1e-15, but never more than 1e-15 of a full node of the lightest material: a deck whose
   // densities are tiny numbers (other mass units) must not find every node empty and its body frozen.
-  mass_tolerance_ = std::min(kMassTolerance, kMassTolerance * lightest * grid_.hx * grid_.hy);
+  mass_tolerance_ = std::min(kMassTolerance, times_cell_volume(kMassTolerance * lightest));
 
   // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).
   constraint_of_.assign(nodes_, -1);
@@ -181,8 +187,11 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   for (std::size_t p = 0; p < n; ++p) {
     const ParticleRecord& r = deck.particles[p];
     const std::string who = "particle " + std::to_string(r.id);
-    if (!std::isfinite(r.coord_x) || !std::isfinite(r.coord_y) || r.coord_x < grid_.xmin || r.coord_x > grid_.xmax ||
-        r.coord_y < grid_.ymin || r.coord_y > grid_.ymax)
+    const double coord[kDim] = {r.coord_x, r.coord_y};
+    bool inside = true;
+    for (int d = 0; d < kDim; ++d)
+      inside = inside && std::isfinite(coord[d]) && coord[d] >= grid_.region_min[d] && coord[d] <= grid_.region_max[d];
+    if (!inside)
       throw common::InputError(who, "at (" + num(r.coord_x) + ", " + num(r.coord_y) +
                                         ") is outside the mesh");
     std::size_t m = materials_.size();
@@ -205,7 +214,7 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
     // nsize = 2 / sqrt(particles in the cell) (2 / particles per direction). Each applies on its own
     // (a deck may give volumes, e.g. mesh.particles_volumes, but no sizes).
     const double count = per_cell[static_cast<std::size_t>(cell_of(cur_.key[p]))];
-    cur_.volume[p] = r.volume > 0 ? r.volume : grid_.hx * grid_.hy / count;
+    cur_.volume[p] = r.volume > 0 ? r.volume : times_cell_volume(1.0) / count;
     cur_.mass[p] = r.volume > 0 && r.mass > 0 ? r.mass : mat.density * cur_.volume[p];
     const bool sized = r.nsize_x > 0 && r.nsize_y > 0;
     const double nsize_x = sized ? r.nsize_x : 2.0 / std::sqrt(count);

@@ -60,13 +60,12 @@ void Engine::set_up_wall_contacts() {
 void Engine::find_wall_contacts() {
   if (contact_nodes_.empty()) return;
   const auto cell_of_particle = [&](std::uint32_t p) { return cell_of(cur_.key[p]); };
-  const double h[2] = {grid_.hx, grid_.hy};
-  const double origin[2] = {grid_.x0, grid_.y0};
+  const auto& h = grid_.spacing;
   for (const auto& [node, c, face] : contact_nodes_) {
     const NodeConstraint& nc = constraints_[c];
     const int dn = nc.friction_dir, dt = 1 - dn;
     const int at[2] = {static_cast<int>(node % node_row_stride()), static_cast<int>(node / node_row_stride())};
-    const double wall = origin[dn] + face * h[dn];
+    const double wall = grid_.origin[dn] + face * h[dn];
     // The cells that share the node and those between it and the wall face (a node behind the face is
     // inside the wall): a particle on the inner side whose domain reaches the face, or one that has passed
     // it (gap < 0), touches it.

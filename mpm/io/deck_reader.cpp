@@ -231,7 +231,8 @@ std::vector<int> nodes_of_set(StrictObject& c, const Lattice& lattice, const Ent
   }
   const long long nset = c.integer("nset_id");
   if (nset == -1) {  // CB-Geo: set -1 is every node
-    for (int k = 0; k < lattice.grid.nodes_x * lattice.grid.nodes_y; ++k) nodes.push_back(k);
+    const auto count = static_cast<int>(lattice.grid.node_count());
+    for (int k = 0; k < count; ++k) nodes.push_back(k);
     return nodes;
   }
   const auto it = sets.nodes.find(nset);
@@ -386,9 +387,11 @@ void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattic
       const auto pts = gauss_points(static_cast<int>(nppd));
       for (long long c : cells) {
         const auto [i, j] = lattice.cell_ij[c];
-        const double xc = deck.grid.x0 + (i + 0.5) * deck.grid.hx, yc = deck.grid.y0 + (j + 0.5) * deck.grid.hy;
+        const auto& origin = deck.grid.origin;
+        const auto& h = deck.grid.spacing;
+        const double xc = origin[0] + (i + 0.5) * h[0], yc = origin[1] + (j + 0.5) * h[1];
         for (double eta : pts)
-          for (double xi : pts) xs.emplace_back(xc + 0.5 * deck.grid.hx * xi, yc + 0.5 * deck.grid.hy * eta);
+          for (double xi : pts) xs.emplace_back(xc + 0.5 * h[0] * xi, yc + 0.5 * h[1] * eta);
       }
       shown = g.where("cset_id");
     } else {
@@ -404,11 +407,12 @@ void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattic
       r.material_id = static_cast<std::uint32_t>(material);
       r.status = 1;
       r.cell_id = -1;
-      const Grid& gr = deck.grid;
-      if (!(r.coord_x >= gr.xmin && r.coord_x <= gr.xmax && r.coord_y >= gr.ymin && r.coord_y <= gr.ymax))
+      const auto& lo = deck.grid.region_min;
+      const auto& hi = deck.grid.region_max;
+      if (!(r.coord_x >= lo[0] && r.coord_x <= hi[0] && r.coord_y >= lo[1] && r.coord_y <= hi[1]))
         throw common::InputError(shown, "particle " + std::to_string(p) + " at (" + num(r.coord_x) + ", " + num(r.coord_y) +
-                                            ") is outside the grid's cells [" + num(gr.xmin) + ", " + num(gr.xmax) + "] x [" +
-                                            num(gr.ymin) + ", " + num(gr.ymax) + "]");
+                                            ") is outside the grid's cells [" + num(lo[0]) + ", " + num(hi[0]) + "] x [" +
+                                            num(lo[1]) + ", " + num(hi[1]) + "]");
       if (pset >= 0) out.psets[pset].push_back(r.id);
       out.records.push_back(r);
     }
@@ -417,9 +421,9 @@ void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattic
 
 /// Lattice cell of a point inside the grid (points on the upper edges belong to the last cell).
 long cell_of(const Grid& g, double x, double y) {
-  const int cells_x = g.nodes_x - 1, cells_y = g.nodes_y - 1;
-  const int i = std::clamp(static_cast<int>(std::floor((x - g.x0) / g.hx)), 0, cells_x - 1);
-  const int j = std::clamp(static_cast<int>(std::floor((y - g.y0) / g.hy)), 0, cells_y - 1);
+  const int cells_x = g.nodes_per_axis[0] - 1, cells_y = g.nodes_per_axis[1] - 1;
+  const int i = std::clamp(static_cast<int>(std::floor((x - g.origin[0]) / g.spacing[0])), 0, cells_x - 1);
+  const int j = std::clamp(static_cast<int>(std::floor((y - g.origin[1]) / g.spacing[1])), 0, cells_y - 1);
   return i + static_cast<long>(j) * cells_x;
 }
 
@@ -615,8 +619,9 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
       if (!find_material(deck.materials, p.material_id))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": material_id " + std::to_string(p.material_id) +
                                              " is not defined in " + shown + " materials");
-      const Grid& g = deck.grid;
-      if (!(p.coord_x >= g.xmin && p.coord_x <= g.xmax && p.coord_y >= g.ymin && p.coord_y <= g.ymax))
+      const auto& lo = deck.grid.region_min;
+      const auto& hi = deck.grid.region_max;
+      if (!(p.coord_x >= lo[0] && p.coord_x <= hi[0] && p.coord_y >= lo[1] && p.coord_y <= hi[1]))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + " at (" + num(p.coord_x) + ", " + num(p.coord_y) +
                                              ") is outside the grid's cells");
       if (!(p.mass > 0) || !(p.volume > 0))
@@ -682,9 +687,10 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
           throw common::InputError(f, "cell id " + num(cid) + " is not a cell of the mesh");
         const auto& p = deck.particles[static_cast<std::size_t>(pid)];
         const auto [i, j] = lattice.cell_ij[static_cast<std::size_t>(cid)];
-        const double x0 = deck.grid.x0 + i * deck.grid.hx, y0 = deck.grid.y0 + j * deck.grid.hy;
-        const double eps = 1e-9 * std::max(deck.grid.hx, deck.grid.hy);
-        if (p.coord_x < x0 - eps || p.coord_x > x0 + deck.grid.hx + eps || p.coord_y < y0 - eps || p.coord_y > y0 + deck.grid.hy + eps)
+        const auto& h = deck.grid.spacing;
+        const double x0 = deck.grid.origin[0] + i * h[0], y0 = deck.grid.origin[1] + j * h[1];
+        const double eps = 1e-9 * std::max(h[0], h[1]);
+        if (p.coord_x < x0 - eps || p.coord_x > x0 + h[0] + eps || p.coord_y < y0 - eps || p.coord_y > y0 + h[1] + eps)
           throw common::InputError(f, "particle " + num(pid) + " at (" + num(p.coord_x) + ", " + num(p.coord_y) +
                                           ") is not inside cell " + num(cid));
       }

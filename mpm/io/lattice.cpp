@@ -63,26 +63,30 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
                                         " lattice points but the file has " + std::to_string(mesh.nodes.size()) + " nodes");
   Lattice out;
   Grid& g = out.grid;
-  g.x0 = ax.origin;
-  g.y0 = ay.origin;
-  g.hx = ax.spacing;
-  g.hy = ay.spacing;
-  g.nodes_x = ax.count;
-  g.nodes_y = ay.count;
+  g.dim = 2;
+  const Axis axes[2] = {ax, ay};
+  for (const int d : {0, 1}) {
+    g.origin[d] = axes[d].origin;
+    g.spacing[d] = axes[d].spacing;
+    g.nodes_per_axis[d] = axes[d].count;
+  }
   g.cell_type = type;
+  const auto& origin = g.origin;
+  const auto& h = g.spacing;
+  const int nodes_x = g.nodes_per_axis[0], nodes_y = g.nodes_per_axis[1];
 
   // Each node on a lattice point, each lattice point used once.
   std::vector<int> owner(static_cast<std::size_t>(ax.count) * ay.count, -1);
   out.node_index.resize(mesh.nodes.size());
   const double tol = 1e-4;  // fraction of a cell: the files print 6 decimals
   for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
-    const double fi = (mesh.nodes[n].x() - g.x0) / g.hx, fj = (mesh.nodes[n].y() - g.y0) / g.hy;
+    const double fi = (mesh.nodes[n].x() - origin[0]) / h[0], fj = (mesh.nodes[n].y() - origin[1]) / h[1];
     const long i = std::lround(fi), j = std::lround(fj);
     if (std::abs(fi - i) > tol || std::abs(fj - j) > tol)
       throw common::InputError(shown, "nodes do not form a uniform rectangular lattice: node " + std::to_string(n) + " at " +
                                           point(mesh.nodes[n]) + " is off the lattice of spacing " +
-                                          std::to_string(g.hx) + " x " + std::to_string(g.hy));
-    const std::size_t k = static_cast<std::size_t>(i + j * g.nodes_x);
+                                          std::to_string(h[0]) + " x " + std::to_string(h[1]));
+    const std::size_t k = static_cast<std::size_t>(i + j * nodes_x);
     if (owner[k] >= 0)
       throw common::InputError(shown, "nodes " + std::to_string(owner[k]) + " and " + std::to_string(n) +
                                           " are at the same point " + point(mesh.nodes[n]));
@@ -94,7 +98,7 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
   static const std::array<std::array<int, 2>, 4> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
   const int per_cell = type == CellType::Gimp16 ? 16 : 4;
   std::set<std::pair<int, int>> used;
-  int imin = g.nodes_x, imax = -1, jmin = g.nodes_y, jmax = -1;
+  int imin = nodes_x, imax = -1, jmin = nodes_y, jmax = -1;
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     const auto& ids = mesh.cells[c];
     // ED2Q4 corners may start at any corner (counter-clockwise): the isoparametric map of a rectangle
@@ -103,16 +107,16 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
     if (per_cell == 4)
       for (int m = 1; m < 4; ++m) {
         const int km = out.node_index[ids[m]], ks = out.node_index[ids[start]];
-        if (km % g.nodes_x + km / g.nodes_x < ks % g.nodes_x + ks / g.nodes_x) start = m;
+        if (km % nodes_x + km / nodes_x < ks % nodes_x + ks / nodes_x) start = m;
       }
     const int k0 = out.node_index[ids[start]];
-    const int i0 = k0 % g.nodes_x, j0 = k0 / g.nodes_x;
+    const int i0 = k0 % nodes_x, j0 = k0 / nodes_x;
     for (int m = 0; m < per_cell; ++m) {
       const auto xi = per_cell == 16 ? gimp_node_natural_coordinates()[m] : corners[m];
       const int i = i0 + (xi[0] + 1) / 2, j = j0 + (xi[1] + 1) / 2;
-      const bool inside = i >= 0 && j >= 0 && i < g.nodes_x && j < g.nodes_y;
+      const bool inside = i >= 0 && j >= 0 && i < nodes_x && j < nodes_y;
       const int listed = (start + m) % per_cell;
-      if (!inside || out.node_index[ids[listed]] != i + j * g.nodes_x)
+      if (!inside || out.node_index[ids[listed]] != i + j * nodes_x)
         throw common::InputError(shown, "cell " + std::to_string(c) + ": node " + std::to_string(listed) + " (id " +
                                             std::to_string(ids[listed]) + ") is not where a rectangular " +
                                             (per_cell == 16 ? "ED2Q16G" : "ED2Q4") +
@@ -121,7 +125,7 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
                                             "; corners counter-clockwise" +
                                             (per_cell == 16 ? " from (-1,-1), then the ring from (-3,-3)" : "") + ")");
     }
-    if (i0 + 1 >= g.nodes_x || j0 + 1 >= g.nodes_y)
+    if (i0 + 1 >= nodes_x || j0 + 1 >= nodes_y)
       throw common::InputError(shown, "cell " + std::to_string(c) + " lies outside the node lattice");
     if (!used.insert({i0, j0}).second)
       throw common::InputError(shown, "cell " + std::to_string(c) + " duplicates another cell at the same place");
@@ -134,10 +138,11 @@ Lattice recognise_lattice(const MeshFile& mesh, CellType type, const std::string
     throw common::InputError(shown, "cells do not form a rectangle: they span " + std::to_string(imax - imin + 1) + " x " +
                                         std::to_string(jmax - jmin + 1) + " cells but the file has " +
                                         std::to_string(mesh.cells.size()));
-  g.xmin = g.x0 + imin * g.hx;
-  g.xmax = g.x0 + (imax + 1) * g.hx;
-  g.ymin = g.y0 + jmin * g.hy;
-  g.ymax = g.y0 + (jmax + 1) * g.hy;
+  const int first_cell[2] = {imin, jmin}, last_cell[2] = {imax, jmax};
+  for (const int d : {0, 1}) {
+    g.region_min[d] = origin[d] + first_cell[d] * h[d];
+    g.region_max[d] = origin[d] + (last_cell[d] + 1) * h[d];
+  }
   return out;
 }
 
@@ -145,18 +150,17 @@ Lattice generate_lattice(const Eigen::Vector2d& origin, const Eigen::Vector2d& h
   const int halo = type == CellType::Gimp16 ? 1 : 0;
   Lattice out;
   Grid& g = out.grid;
+  g.dim = 2;
   g.cell_type = type;
-  g.hx = h.x();
-  g.hy = h.y();
-  g.x0 = origin.x() - halo * h.x();
-  g.y0 = origin.y() - halo * h.y();
-  g.nodes_x = cells_x + 1 + 2 * halo;
-  g.nodes_y = cells_y + 1 + 2 * halo;
-  g.xmin = origin.x();
-  g.ymin = origin.y();
-  g.xmax = origin.x() + cells_x * h.x();
-  g.ymax = origin.y() + cells_y * h.y();
-  out.node_index.resize(static_cast<std::size_t>(g.nodes_x) * g.nodes_y);
+  const int cells[2] = {cells_x, cells_y};
+  for (const int d : {0, 1}) {
+    g.spacing[d] = h[d];
+    g.origin[d] = origin[d] - halo * h[d];
+    g.nodes_per_axis[d] = cells[d] + 1 + 2 * halo;
+    g.region_min[d] = origin[d];
+    g.region_max[d] = origin[d] + cells[d] * h[d];
+  }
+  out.node_index.resize(g.node_count());
   for (std::size_t k = 0; k < out.node_index.size(); ++k) out.node_index[k] = static_cast<int>(k);
   for (int j = 0; j < cells_y; ++j)
     for (int i = 0; i < cells_x; ++i) out.cell_ij.push_back({i + halo, j + halo});
@@ -165,16 +169,19 @@ Lattice generate_lattice(const Eigen::Vector2d& origin, const Eigen::Vector2d& h
 
 std::map<std::string, std::vector<int>> boundary_node_sets(const Grid& g) {
   std::map<std::string, std::vector<int>> sets;
-  const double ex = 1e-9 * g.hx, ey = 1e-9 * g.hy;
-  for (int j = 0; j < g.nodes_y; ++j)
-    for (int i = 0; i < g.nodes_x; ++i) {
-      const int k = i + j * g.nodes_x;
-      const double x = g.x0 + i * g.hx, y = g.y0 + j * g.hy;
+  const auto& h = g.spacing;
+  const auto& lo = g.region_min;
+  const auto& hi = g.region_max;
+  const double ex = 1e-9 * h[0], ey = 1e-9 * h[1];
+  for (int j = 0; j < g.nodes_per_axis[1]; ++j)
+    for (int i = 0; i < g.nodes_per_axis[0]; ++i) {
+      const int k = i + j * g.nodes_per_axis[0];
+      const double x = g.origin[0] + i * h[0], y = g.origin[1] + j * h[1];
       sets["all"].push_back(k);
-      if (x <= g.xmin + ex) sets["left"].push_back(k);
-      if (x >= g.xmax - ex) sets["right"].push_back(k);
-      if (y <= g.ymin + ey) sets["bottom"].push_back(k);
-      if (y >= g.ymax - ey) sets["top"].push_back(k);
+      if (x <= lo[0] + ex) sets["left"].push_back(k);
+      if (x >= hi[0] - ex) sets["right"].push_back(k);
+      if (y <= lo[1] + ey) sets["bottom"].push_back(k);
+      if (y >= hi[1] - ey) sets["top"].push_back(k);
     }
   return sets;
 }

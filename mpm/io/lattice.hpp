@@ -15,7 +15,7 @@ namespace mpm::io {
 
 struct Lattice {
   Grid grid;
-  std::vector<int> node_index;                ///< lattice index (i + j*nodes_x) of each file node id
+  std::vector<int> node_index;                ///< lattice index (i + j * grid.nodes_per_axis[0]) of each file node id
   std::vector<std::array<int, 2>> cell_ij;    ///< lattice cell (i, j) of each file cell id (its node (i, j) is corner (-1,-1))
 };
 

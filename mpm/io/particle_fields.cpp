@@ -72,7 +72,8 @@ std::vector<ParticleField> particle_fields(std::span<const ParticleRecord> ps, c
     return c == 0 ? p.displacement_x : c == 1 ? p.displacement_y : 0.0;
   }));
   f.push_back(real_field("size", K::Vector, ps, [&](const auto& p, int c) {
-    return c == 0 ? extent(p.nsize_x, grid.hx, p.volume) : c == 1 ? extent(p.nsize_y, grid.hy, p.volume) : 0.0;
+    const auto& h = grid.spacing;
+    return c == 0 ? extent(p.nsize_x, h[0], p.volume) : c == 1 ? extent(p.nsize_y, h[1], p.volume) : 0.0;
   }));
   f.push_back(real_field("stress", K::Tensor6, ps, [](const auto& p, int c) {
     const double s[6] = {p.stress_xx, p.stress_yy, p.stress_zz, p.tau_xy, p.tau_yz, p.tau_xz};
@@ -85,7 +86,7 @@ std::vector<ParticleField> particle_fields(std::span<const ParticleRecord> ps, c
   f.push_back(real_field("mass", K::Scalar, ps, [](const auto& p, int) { return p.mass; }));
   f.push_back(real_field("volume", K::Scalar, ps, [](const auto& p, int) { return p.volume; }));
   f.push_back(real_field("radius", K::Scalar, ps, [&](const auto& p, int) {
-    const double ex = extent(p.nsize_x, grid.hx, p.volume), ey = extent(p.nsize_y, grid.hy, p.volume);
+    const double ex = extent(p.nsize_x, grid.spacing[0], p.volume), ey = extent(p.nsize_y, grid.spacing[1], p.volume);
     // sqrt(ex) sqrt(ey) where ex ey overflows (found by fuzzing: a resumed bilinear-cell particle with
     // nsize 1e68 x 1e247, which the physics ignores, gave a radius of inf).
     const double area = ex * ey;

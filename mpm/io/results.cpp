@@ -62,10 +62,12 @@ SeriesRow summarize_state(long long step, double time, double dt, std::span<cons
   row.height_y_p995 = percentile(std::move(ys), 99.5);
 
   // Checkerboard index: shear stress deviation from the cell mean, over rho g H.
-  const int cells_x = std::max(grid.nodes_x - 1, 1), cells_y = std::max(grid.nodes_y - 1, 1);
+  const int cells_x = std::max(grid.nodes_per_axis[0] - 1, 1), cells_y = std::max(grid.nodes_per_axis[1] - 1, 1);
   auto cell_of = [&](const ParticleRecord& p) {
-    const int i = std::clamp(static_cast<int>(std::floor((p.coord_x - grid.x0) / grid.hx)), 0, cells_x - 1);
-    const int j = std::clamp(static_cast<int>(std::floor((p.coord_y - grid.y0) / grid.hy)), 0, cells_y - 1);
+    const auto& origin = grid.origin;
+    const auto& h = grid.spacing;
+    const int i = std::clamp(static_cast<int>(std::floor((p.coord_x - origin[0]) / h[0])), 0, cells_x - 1);
+    const int j = std::clamp(static_cast<int>(std::floor((p.coord_y - origin[1]) / h[1])), 0, cells_y - 1);
     return static_cast<long long>(i) + static_cast<long long>(j) * cells_x;
   };
   std::map<long long, std::pair<double, int>> cell_sum;

@@ -92,10 +92,12 @@ void write_pvd(const fs::path& file, std::span<const PvdEntry> entries) {
 
 void write_grid_vtr(const fs::path& file, const Deck& deck) {
   const Grid& g = deck.grid;
-  const std::size_t nodes = static_cast<std::size_t>(g.nodes_x) * static_cast<std::size_t>(g.nodes_y);
-  std::vector<double> xs(static_cast<std::size_t>(g.nodes_x)), ys(static_cast<std::size_t>(g.nodes_y)), zs{0.0};
-  for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = g.x0 + static_cast<double>(i) * g.hx;
-  for (std::size_t j = 0; j < ys.size(); ++j) ys[j] = g.y0 + static_cast<double>(j) * g.hy;
+  const auto& h = g.spacing;
+  const std::size_t nodes = g.node_count();
+  std::vector<double> xs(static_cast<std::size_t>(g.nodes_per_axis[0]));
+  std::vector<double> ys(static_cast<std::size_t>(g.nodes_per_axis[1])), zs{0.0};
+  for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = g.origin[0] + static_cast<double>(i) * h[0];
+  for (std::size_t j = 0; j < ys.size(); ++j) ys[j] = g.origin[1] + static_cast<double>(j) * h[1];
   std::vector<std::int64_t> fixed_x(nodes, 0), fixed_y(nodes, 0), in_mesh(nodes, 0);
   std::vector<double> friction(nodes, 0.0);
   for (const auto& c : deck.velocity_constraints)
@@ -105,11 +107,12 @@ void write_grid_vtr(const fs::path& file, const Deck& deck) {
   constexpr double kTol = 1e-9;
   for (std::size_t j = 0; j < ys.size(); ++j)
     for (std::size_t i = 0; i < xs.size(); ++i)
-      in_mesh[i + j * xs.size()] = xs[i] >= g.xmin - kTol * g.hx && xs[i] <= g.xmax + kTol * g.hx &&
-                                   ys[j] >= g.ymin - kTol * g.hy && ys[j] <= g.ymax + kTol * g.hy;
+      in_mesh[i + j * xs.size()] = xs[i] >= g.region_min[0] - kTol * h[0] && xs[i] <= g.region_max[0] + kTol * h[0] &&
+                                   ys[j] >= g.region_min[1] - kTol * h[1] && ys[j] <= g.region_max[1] + kTol * h[1];
   std::ostringstream xml;
   AppendedData data;
-  const std::string extent = "0 " + std::to_string(g.nodes_x - 1) + " 0 " + std::to_string(g.nodes_y - 1) + " 0 0";
+  const std::string extent =
+      "0 " + std::to_string(g.nodes_per_axis[0] - 1) + " 0 " + std::to_string(g.nodes_per_axis[1] - 1) + " 0 0";
   xml << kHeader
       << "<VTKFile type=\"RectilinearGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
       << " <RectilinearGrid WholeExtent=\"" << extent << "\">\n  <Piece Extent=\"" << extent << "\">\n   <PointData>\n";

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -22,16 +23,29 @@ enum class Scheme { USF, USL, MUSL };
 /// The particle-grid velocity transfer (analysis.transfer; mpm/core/velocity_transfer.hpp).
 enum class Transfer { FLIP, PIC, APIC };
 
-/// A uniform rectangular node lattice. Node (i, j) sits at (x0 + i*hx, y0 + j*hy) and has index
-/// i + j*nodes_x. For GIMP decks the lattice includes CB-Geo's halo ring of nodes.
+/// The most axes a problem has (CB-Geo's 3D decks: MPMExplicit3D, Ascii3D).
+inline constexpr int kMaxDim = 3;
+
+/// A uniform rectangular node lattice of `dim` axes. Along axis d node i_d sits at origin[d] + i_d *
+/// spacing[d]; node (i, j) has index i + j * nodes_per_axis[0] (3D: i + nodes_per_axis[0] * (j +
+/// nodes_per_axis[1] * k)). Entries d >= dim are unused. For GIMP decks the lattice includes CB-Geo's
+/// halo ring of nodes.
 struct Grid {
-  double x0 = 0, y0 = 0;  ///< coordinates of node (0, 0), m
-  double hx = 1, hy = 1;  ///< cell size, m
-  int nodes_x = 0, nodes_y = 0;
+  /// The problem's dimension: 2 for every deck read today (MPMExplicit2D, Ascii2D), 3 for CB-Geo's 3D decks.
+  int dim = 2;
+  std::array<double, kMaxDim> origin{};          ///< coordinates of node 0, m
+  std::array<double, kMaxDim> spacing{1, 1, 1};  ///< cell size, m
+  std::array<int, kMaxDim> nodes_per_axis{};
   CellType cell_type = CellType::Linear4;
-  /// The region covered by the mesh file's cells (where particles may be); outside it a particle
-  /// has left the grid.
-  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+  /// The region covered by the mesh file's cells (where particles may be), [region_min[d], region_max[d]]
+  /// on axis d; outside it a particle has left the grid.
+  std::array<double, kMaxDim> region_min{}, region_max{};
+  /// The lattice's nodes: the product of nodes_per_axis over the dim axes.
+  std::size_t node_count() const {
+    std::size_t count = 1;
+    for (int d = 0; d < dim; ++d) count *= static_cast<std::size_t>(nodes_per_axis[d]);
+    return count;
+  }
 };
 
 /// CB-Geo velocity constraint: velocity component `dir` (0 = x, 1 = y) fixed to `velocity` on `nodes`.

@@ -18,16 +18,16 @@ using mpm::Deck;
 inline mpm::Grid make_grid(double x0, double y0, double h, int cells_x, int cells_y, CellType type) {
   mpm::Grid g;
   const int halo = type == CellType::Gimp16 ? 1 : 0;
-  g.x0 = x0 - halo * h;
-  g.y0 = y0 - halo * h;
-  g.hx = g.hy = h;
-  g.nodes_x = cells_x + 1 + 2 * halo;
-  g.nodes_y = cells_y + 1 + 2 * halo;
+  const double corner[2] = {x0, y0};
+  const int cells[2] = {cells_x, cells_y};
+  for (int d = 0; d < 2; ++d) {
+    g.origin[d] = corner[d] - halo * h;
+    g.spacing[d] = h;
+    g.nodes_per_axis[d] = cells[d] + 1 + 2 * halo;
+    g.region_min[d] = corner[d];
+    g.region_max[d] = corner[d] + cells[d] * h;
+  }
   g.cell_type = type;
-  g.xmin = x0;
-  g.xmax = x0 + cells_x * h;
-  g.ymin = y0;
-  g.ymax = y0 + cells_y * h;
   return g;
 }
 
@@ -57,7 +57,7 @@ inline mpm::MaterialSpec mohr_coulomb(unsigned id, double rho, double E, double 
 /// sub-cell centres, volume 0 (the engine applies CB-Geo's defaults). Returns the first id used.
 inline std::int64_t fill_block(Deck& deck, double xa, double xb, double ya, double yb, int ppd, unsigned material,
                                std::int64_t first_id = -1) {
-  const double h = deck.grid.hx;
+  const double h = deck.grid.spacing[0];
   std::int64_t id = first_id >= 0 ? first_id : static_cast<std::int64_t>(deck.particles.size());
   const std::int64_t start = id;
   const int nx = static_cast<int>(std::lround((xb - xa) / h)) * ppd;
@@ -77,9 +77,10 @@ inline std::int64_t fill_block(Deck& deck, double xa, double xb, double ya, doub
 /// Lattice indices of the nodes whose coordinates satisfy `pred`.
 inline std::vector<int> nodes_where(const mpm::Grid& g, const std::function<bool(double, double)>& pred) {
   std::vector<int> out;
-  for (int j = 0; j < g.nodes_y; ++j)
-    for (int i = 0; i < g.nodes_x; ++i)
-      if (pred(g.x0 + i * g.hx, g.y0 + j * g.hy)) out.push_back(i + j * g.nodes_x);
+  for (int j = 0; j < g.nodes_per_axis[1]; ++j)
+    for (int i = 0; i < g.nodes_per_axis[0]; ++i)
+      if (pred(g.origin[0] + i * g.spacing[0], g.origin[1] + j * g.spacing[1]))
+        out.push_back(i + j * g.nodes_per_axis[0]);
   return out;
 }
 

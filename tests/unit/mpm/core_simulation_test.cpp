@@ -288,7 +288,7 @@ TEST(Simulation, LaggedFrictionResumeContinuesBitIdenticallyFromItsMemory) {
 
   EXPECT_FALSE(Simulation(collapsing_column(mpm::Scheme::MUSL, CellType::Gimp16), 1).friction_memory_snapshot());
   Deck stray = resumed_deck;
-  stray.friction_memory = {{static_cast<std::int64_t>(stray.grid.nodes_x * stray.grid.nodes_y - 1), 1.0, 1.0}};
+  stray.friction_memory = {{static_cast<std::int64_t>(stray.grid.node_count() - 1), 1.0, 1.0}};
   try {
     Simulation sim(stray, 1);
     ADD_FAILURE() << "the top corner node has no lagged friction";
@@ -502,6 +502,14 @@ TEST(Simulation, InputErrorsNameTheProblem) {
   Deck gimp_without_halo = deck;
   gimp_without_halo.grid.cell_type = CellType::Gimp16;
   EXPECT_THROW(Simulation(gimp_without_halo, 1), common::InputError);
+  Deck three_d = deck;  // a 3D grid for the 2D engine (the deck reader does not make one yet)
+  three_d.grid.dim = 3;
+  try {
+    Simulation sim(three_d, 1);
+    FAIL();
+  } catch (const common::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("3D grid"), std::string::npos) << e.what();
+  }
   // Transfers that contradict each other in a deck built in code (the reader refuses them in JSON).
   Deck apic_pic = deck;
   apic_pic.analysis.transfer = mpm::Transfer::APIC;

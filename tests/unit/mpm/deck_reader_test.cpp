@@ -89,11 +89,12 @@ const fs::path kCbgeo = fs::path(GEOFLOW_TEST_DATA_DIR) / "reference_runs/cbgeo"
 TEST(DeckReader, ReadsTheSmallDeck) {
   SmallDeck d("ok");
   const auto deck = d.read();
-  EXPECT_EQ(deck.grid.nodes_x, 5);
-  EXPECT_EQ(deck.grid.nodes_y, 4);
-  EXPECT_CLOSE(deck.grid.hx, 1.0, 1e-12, 0);
-  EXPECT_CLOSE(deck.grid.xmax, 4.0, 1e-12, 0);
-  EXPECT_CLOSE(deck.grid.ymax, 3.0, 1e-12, 0);
+  EXPECT_EQ(deck.grid.dim, 2);
+  EXPECT_EQ(deck.grid.nodes_per_axis[0], 5);
+  EXPECT_EQ(deck.grid.nodes_per_axis[1], 4);
+  EXPECT_CLOSE(deck.grid.spacing[0], 1.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.region_max[0], 4.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.region_max[1], 3.0, 1e-12, 0);
   ASSERT_EQ(deck.particles.size(), 4u);
   EXPECT_EQ(deck.particles[3].id, 3);
   EXPECT_EQ(deck.particles[3].coord_y, 1.75);
@@ -209,12 +210,12 @@ TEST(DeckReader, ParticleStressesVolumesAndMaterialSets) {
 TEST(DeckReader, ReadsTheCbGeoGimpColumnDeck) {
   const auto deck = mpm::io::read_deck(kCbgeo / "mc_column_gimp_short", "mpm.json");
   EXPECT_EQ(deck.grid.cell_type, mpm::CellType::Gimp16);
-  EXPECT_EQ(deck.grid.nodes_x, 63);  // 60 cells + the halo ring
-  EXPECT_EQ(deck.grid.nodes_y, 23);
-  EXPECT_CLOSE(deck.grid.x0, -0.5, 1e-12, 0);
-  EXPECT_CLOSE(deck.grid.xmin, 0.0, 1e-12, 0);
-  EXPECT_CLOSE(deck.grid.xmax, 30.0, 1e-12, 0);
-  EXPECT_CLOSE(deck.grid.ymax, 10.0, 1e-12, 0);
+  EXPECT_EQ(deck.grid.nodes_per_axis[0], 63);  // 60 cells + the halo ring
+  EXPECT_EQ(deck.grid.nodes_per_axis[1], 23);
+  EXPECT_CLOSE(deck.grid.origin[0], -0.5, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.region_min[0], 0.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.region_max[0], 30.0, 1e-12, 0);
+  EXPECT_CLOSE(deck.grid.region_max[1], 10.0, 1e-12, 0);
   EXPECT_EQ(deck.particles.size(), 1280u);
   EXPECT_CLOSE(deck.particles[0].stress_yy, -139056.75, 1e-9, 0);
   ASSERT_EQ(deck.materials.size(), 1u);
@@ -618,12 +619,12 @@ TEST(DeckReader, GeneratedGimpGridWithNamedBoundarySets) {
                             "friction_constraints": [{"nset_id": "bottom", "dir": 1, "sign_n": -1, "friction": 0.5}]}})");
   const auto deck = d.read();
   EXPECT_EQ(deck.grid.cell_type, mpm::CellType::Gimp16);
-  EXPECT_EQ(deck.grid.nodes_x, 8 + 3);  // 9 node columns + the GIMP halo on both sides
-  EXPECT_EQ(deck.grid.nodes_y, 6 + 3);
-  EXPECT_EQ(deck.grid.x0, -0.5);
-  EXPECT_EQ(deck.grid.xmin, 0.0);
-  EXPECT_EQ(deck.grid.xmax, 4.0);
-  EXPECT_EQ(deck.grid.ymax, 3.0);
+  EXPECT_EQ(deck.grid.nodes_per_axis[0], 8 + 3);  // 9 node columns + the GIMP halo on both sides
+  EXPECT_EQ(deck.grid.nodes_per_axis[1], 6 + 3);
+  EXPECT_EQ(deck.grid.origin[0], -0.5);
+  EXPECT_EQ(deck.grid.region_min[0], 0.0);
+  EXPECT_EQ(deck.grid.region_max[0], 4.0);
+  EXPECT_EQ(deck.grid.region_max[1], 3.0);
   // "left": the node columns at x = -0.5 and x = 0 (halo included), 2 x 9 nodes.
   ASSERT_EQ(deck.velocity_constraints[0].nodes.size(), 18u);
   EXPECT_EQ(deck.velocity_constraints[0].nodes[0], 0);

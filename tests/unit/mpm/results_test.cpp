@@ -41,10 +41,8 @@ std::vector<ParticleRecord> four_particles() {
 
 mpm::Grid unit_grid() {
   mpm::Grid g;
-  g.nodes_x = 5;
-  g.nodes_y = 4;
-  g.xmax = 4;
-  g.ymax = 3;
+  g.nodes_per_axis = {5, 4, 0};
+  g.region_max = {4, 3, 0};
   return g;
 }
 

@@ -88,8 +88,8 @@ Deck shear_deck() {
   deck.materials.push_back(softening_material());
   fill_block(deck, 0.5, 1.5, 0.0, 1.0, 2, 0);
   for (auto& p : deck.particles) p.stress_xx = p.stress_yy = p.stress_zz = -kP0;
-  for (int j = 0; j < deck.grid.nodes_y; ++j) {
-    const double y = deck.grid.y0 + j * deck.grid.hy;
+  for (int j = 0; j < deck.grid.nodes_per_axis[1]; ++j) {
+    const double y = deck.grid.origin[1] + j * deck.grid.spacing[1];
     const auto row = nodes_where(deck.grid, [y](double, double yn) { return std::abs(yn - y) < 1e-9; });
     deck.velocity_constraints.push_back({row, 0, kRate * y});
     deck.velocity_constraints.push_back({row, 1, 0.0});
@@ -169,10 +169,10 @@ Deck resumed_deck(const std::string& name, double pd0, unsigned count) {
   mpm::io::write_particle_table(dir / "results/shear" / mpm::io::particle_file_name(0, nsteps), records);
   std::ofstream vel(dir / "velocity.txt");
   const mpm::Grid& g = base.grid;
-  for (int j = 0; j < g.nodes_y; ++j)
-    for (int i = 0; i < g.nodes_x; ++i) {
-      vel << i + j * g.nodes_x << " 0 " << kRate * (g.y0 + j * g.hy) << "\n";
-      vel << i + j * g.nodes_x << " 1 0\n";
+  for (int j = 0; j < g.nodes_per_axis[1]; ++j)
+    for (int i = 0; i < g.nodes_per_axis[0]; ++i) {
+      vel << i + j * g.nodes_per_axis[0] << " 0 " << kRate * (g.origin[1] + j * g.spacing[1]) << "\n";
+      vel << i + j * g.nodes_per_axis[0] << " 1 0\n";
     }
   vel.close();
   std::ofstream(dir / "mpm.json") << R"({

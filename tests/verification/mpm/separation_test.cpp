@@ -35,8 +35,8 @@ Extension pull_apart(double separation_ratio) {
   deck.grid = make_grid(-4, -4, h, 8, 8, CellType::Linear4);
   deck.materials.push_back(soil);
   fill_block(deck, -1, 1, -1, 1, 2, 0);
-  for (int i = 0; i < deck.grid.nodes_x; ++i) {
-    const double x = deck.grid.x0 + i * h;
+  for (int i = 0; i < deck.grid.nodes_per_axis[0]; ++i) {
+    const double x = deck.grid.origin[0] + i * h;
     deck.velocity_constraints.push_back(
         {nodes_where(deck.grid, [&](double xn, double) { return std::abs(xn - x) < 1e-9; }), 0, rate * x});
     deck.velocity_constraints.push_back(
