@@ -41,7 +41,8 @@ void Engine::scatter_particle(std::size_t k, double* g, std::size_t row_stride, 
 template <class Shape, bool Affine>
 bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
   constexpr int W = Shape::kWidth;
-  const double ihx = inv_h_[0], ihy = inv_h_[1];
+  double ih[kDim];  // 1 / h per axis, as eval_axes takes it
+  for (int d = 0; d < kDim; ++d) ih[d] = inv_h_[d];
   // Sorted by key: the fourth particle on has the first one's key only if the four between do. Runs
   // only with 4-double registers (stencil_runs_) and in decks without surface tractions (whose
   // particles p2g maps one by one), so that every particle the one-particle kernels of p2g and g2p see
@@ -50,15 +51,18 @@ bool Engine::evaluate_shape_functions(std::size_t c, std::size_t k) {
       cur_.key[order_[k + kRunLanes - 1]] == cur_.key[order_[k]] && evaluate_run<Shape, Affine>(c, k))
     return true;
   const std::uint32_t p = order_[k];
-  const double x = cur_.position[0][p], y = cur_.position[1][p];
-  int bi = 0, bj = 0;
-  Shape::eval_xy((x - grid_.origin[0]) * ihx, (y - grid_.origin[1]) * ihy, cur_.half_size[0][p], cur_.half_size[1][p],
-                 cells_per_axis_[0] - 1, cells_per_axis_[1] - 1, ihx, ihy, bi, bj, &weights_[4 * W * k]);
-  set_stencil(c, k, bi, bj, -1);
+  double s[kDim], l[kDim];  // per axis: lattice coordinate, half-size (cell units)
+  int max_cell[kDim], first[kDim];
+  for (int d = 0; d < kDim; ++d) {
+    s[d] = (cur_.position[d][p] - grid_.origin[d]) * ih[d];
+    l[d] = cur_.half_size[d][p];
+    max_cell[d] = cells_per_axis_[d] - 1;
+  }
+  Shape::template eval_axes<kDim>(s, l, max_cell, ih, first, &weights_[4 * W * k]);
+  set_stencil(c, k, first[0], first[1], -1);
   if constexpr (Affine) {  // APIC: the first node's offset and the affine weights, for this step's phases
     double* offset = &stencil_offset_[2 * k];
-    offset[0] = grid_.origin[0] + bi * grid_.spacing[0] - x;
-    offset[1] = grid_.origin[1] + bj * grid_.spacing[1] - y;
+    for (int d = 0; d < kDim; ++d) offset[d] = grid_.origin[d] + first[d] * grid_.spacing[d] - cur_.position[d][p];
     affine_weights(Shape{}, StencilWeights<W>(&weights_[4 * W * k]), offset[0], offset[1], grid_.spacing[0],
                    grid_.spacing[1], &affine_weights_[2 * W * k]);
   }
