@@ -96,17 +96,34 @@ proc fos_asked {script value} {
     return [expr {$value eq "yes"}]
 }
 
-# Transient steps of dt from the current time to tend (the last one shortened to land on tend), each halved
-# up to 6 times where it fails; an error naming the stage (label) and the time where it fails for good.
-# Returns the time reached.
+# Transient steps of dt from the current time to tend (the last one shortened to land on tend), halved where
+# one fails, down to dt / 64; an error naming the stage (label) and the time where it fails for good.
+# Returns the time reached. After a cut the step stays halved for kStepsBeforeGrowth converged steps before it
+# is doubled again (up to dt), across calls with the same dt: where the full step failed once (a liquefying
+# layer, a yielding slope), it tends to fail again, and a failed step costs the test's whole iteration limit.
+# Measured on the tailings dam at 0.3 g, 4 s of shaking, dt 0.005: 503 failed steps and 219 s of CPU going
+# back to dt after every cut, 16 and 29 s keeping the halved step for 50 steps.
+namespace eval hybrid_stages {
+    variable kStepsBeforeGrowth 50
+    variable step_dt ""       ;# the dt of the last call
+    variable step_now 0.0     ;# the step in use (dt, or dt halved after cuts)
+    variable converged 0      ;# converged steps since the last cut or doubling
+}
 proc advance_to {tend dt label} {
+    upvar #0 hybrid_stages::step_dt step_dt hybrid_stages::step_now h_now hybrid_stages::converged converged
+    if {$step_dt != $dt} { set step_dt $dt; set h_now $dt; set converged 0 }
     set t [getTime]
     while {$tend - $t > 1e-9} {
-        set h [expr {min($dt, $tend - $t)}]
-        set cuts 0
+        set h [expr {min($h_now, $tend - $t)}]
         while {[analyze 1 $h] != 0} {
-            if {[incr cuts] > 6} { error [format "%s: no convergence at t = %.6g s" $label $t] }
+            if {$h < $dt / 64.0 * 1.5} { error [format "%s: no convergence at t = %.6g s" $label $t] }
             set h [expr {$h / 2.0}]
+            set h_now $h
+            set converged 0
+        }
+        if {$h_now < $dt && [incr converged] >= $hybrid_stages::kStepsBeforeGrowth} {
+            set h_now [expr {min(2.0 * $h_now, $dt)}]
+            set converged 0
         }
         set t [getTime]
     }
