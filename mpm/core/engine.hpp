@@ -76,7 +76,7 @@ struct ParticleArrays {
   std::vector<double> exx, eyy, gxy, epsv;
   std::vector<double> svars;          ///< kStateVariables per particle
   std::vector<double> affine;         ///< 4 per particle: the APIC matrix B_p (Bxx, Bxy, Byx, Byy), m^2/s
-  std::vector<std::int64_t> key;      ///< sort key (Engine::cell_key): 4 x cell + stencil quadrant, or kRemoved
+  std::vector<std::int64_t> key;      ///< sort key (Engine::cell_key): cell and stencil quadrant, or kRemoved
   /// Per particle: its slot in Engine::loads_ (external_loads.hpp), -1 no traction; empty without tractions.
   std::vector<std::int32_t> traction_slot;
   void resize(std::size_t n);
@@ -174,13 +174,16 @@ class Engine {
   void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
   NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
-  /// The particle's sort key: 4 x its lattice cell (x fastest) + the quadrant of the cell whose node is
-  /// its nearest (uGIMP; else 0), so that the particles of a cell come in runs that share one stencil
-  /// (uGIMP: the 3 x 3 nodes around the nearest node; bilinear: the cell's 2 x 2).
-  /// cell_of(key) is the cell.
-  std::int64_t cell_key(double x, double y) const;
-  Long4 cell_keys(Double4 x, Double4 y) const;  ///< cell_key in lanes, for positions inside the region
-  static std::int64_t cell_of(std::int64_t key) { return key >> 2; }
+  /// Sort keys per cell: one per stencil quadrant (an octant in 3D).
+  static constexpr int kKeysPerCell = 1 << kDim;
+  /// The particle's sort key at position x: kKeysPerCell x its lattice cell (axis 0 fastest) + the
+  /// quadrant of the cell whose node is its nearest (uGIMP: bit d set in the cell's upper half on axis d;
+  /// else 0), so that the particles of a cell come in runs that share one stencil (uGIMP: the 3 x 3 nodes
+  /// around the nearest node; bilinear: the cell's 2 x 2). cell_of(key) is the cell.
+  std::int64_t cell_key(std::array<double, kDim> x) const;  // by value: in registers in 2D
+  /// cell_key in lanes, for positions inside the region.
+  Long4 cell_keys(const std::array<Double4, kDim>& x) const;
+  static std::int64_t cell_of(std::int64_t key) { return key >> kDim; }
 
   // grid
   Grid grid_;
@@ -200,10 +203,14 @@ class Engine {
   std::size_t nodes_ = 0;
   int bi0_ = 0, bi1_ = 0, bj0_ = 0, bj1_ = 0;  ///< active node box [bi0, bi1) x [bj0, bj1)
   std::vector<double> mass_;      ///< nodal mass
-  std::vector<double> momentum_;  ///< 2 per node
-  std::vector<double> force_;     ///< 2 per node (external + internal)
-  std::vector<double> velocity_;  ///< 2 per node: momentum / mass, constraints as the strain rate reads them
-  std::vector<double> updated_;   ///< 4 per node: updated velocity (x, y), acceleration (x, y)
+  /// Values per node: one per axis in the nodal vectors momentum_, force_ and velocity_; the updated
+  /// velocity, then the acceleration, in updated_.
+  static constexpr std::size_t kVectorStride = kDim, kUpdatedStride = 2 * kDim;
+  std::vector<double> momentum_;  ///< kVectorStride per node
+  std::vector<double> force_;     ///< kVectorStride per node (external + internal)
+  /// kVectorStride per node: momentum / mass, constraints as the strain rate reads them.
+  std::vector<double> velocity_;
+  std::vector<double> updated_;   ///< kUpdatedStride per node: updated velocity (x, y), acceleration (x, y)
   std::vector<double> nodal_remedy_;  ///< 3 per node: the values a nodal remedy smooths (stress_remedy.hpp)
   /// A chunk's band of the grid: the nodes [i0, i1) x [j0, j1) its particles' stencils reach, 5 values
   /// per node (m, px, py, fx, fy), row by row from `offset` in pool_; summed in chunk order by
@@ -281,7 +288,7 @@ class Engine {
   std::vector<std::size_t> chunk_;        ///< chunks_ + 1 boundaries (iteration indices), at cell boundaries
   std::size_t chunks_ = 0;
   static constexpr std::size_t kChunkParticles = 2048;  ///< target chunk size
-  std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (cells + 1)
+  std::vector<std::uint32_t> bucket_;     ///< counting-sort scratch (keys + 1: kKeysPerCell x cells + 1)
   std::vector<std::uint32_t> sorted_;     ///< counting-sort scratch
   OrderMerge merge_;                      ///< resort_particles: the particles that changed key, merged in
 

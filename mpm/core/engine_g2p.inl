@@ -177,7 +177,7 @@ void Engine::place_particle(std::size_t c, std::size_t k, std::uint32_t p, doubl
   const bool on_grid = within(0.0, 0.0) || within(gimp_margin_ * cur_.half_size[0][p] * grid_.spacing[0],
                                                   gimp_margin_ * cur_.half_size[1][p] * grid_.spacing[1]);
   const auto place_on_grid = [&] {
-    nxt_.key[k] = cell_key(x, y);
+    nxt_.key[k] = cell_key({x, y});
     merge_.record(c, k, nxt_.key[k] == cur_.key[p] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
   };
   if (on_grid && speed * dt_ <= h) {
@@ -234,28 +234,30 @@ void Engine::place_run(std::size_t c, std::size_t k, const std::uint32_t* p, Dou
   store4(to[1], y);
   store4(to[2], ux0 + dt * vgx);
   store4(to[3], uy0 + dt * vgy);
-  const Long4 keys = cell_keys(x, y);
+  const Long4 keys = cell_keys({x, y});
   __builtin_memcpy(key_to, &keys, sizeof keys);
   for (int l = 0; l < kRunLanes; ++l)
     merge_.record(c, k + l, keys[l] == key_was[l] ? OrderMerge::Status::Kept : OrderMerge::Status::Moved);
 }
 
 /// cell_key of four positions inside the mesh region, in lanes (32-bit keys: keys_fit_int32_).
-Long4 Engine::cell_keys(Double4 x, Double4 y) const {
-  const Double4 sx = (x - splat4(grid_.origin[0])) * splat4(inv_h_[0]);
-  const Double4 sy = (y - splat4(grid_.origin[1])) * splat4(inv_h_[1]);
+Long4 Engine::cell_keys(const std::array<Double4, kDim>& x) const {
   const auto clamp = [](Int4 v, int hi) {
     v = v < 0 ? Int4{0, 0, 0, 0} : v;
     return v > hi ? Int4{hi, hi, hi, hi} : v;
   };
-  // Truncation, as static_cast<int>.
-  const Int4 i = clamp(__builtin_convertvector(sx, Int4), cells_per_axis_[0] - 1);
-  const Int4 j = clamp(__builtin_convertvector(sy, Int4), cells_per_axis_[1] - 1);
-  Int4 key = 4 * (i + j * cells_per_axis_[0]);
+  Double4 s[kDim];
+  Int4 i[kDim];
+  for (int d = 0; d < kDim; ++d) {
+    s[d] = (x[d] - splat4(grid_.origin[d])) * splat4(inv_h_[d]);
+    i[d] = clamp(__builtin_convertvector(s[d], Int4), cells_per_axis_[d] - 1);  // truncation, as static_cast<int>
+  }
+  Int4 cell = i[kDim - 1];  // axis 0 fastest, as cell_key
+  for (int d = kDim - 2; d >= 0; --d) cell = cell * cells_per_axis_[d] + i[d];
+  Int4 key = kKeysPerCell * cell;
   if (grid_.cell_type == CellType::Gimp16) {  // the quadrant, GimpShape::nearest_node(s) > i
     const Double4 half = splat4(0.5);
-    key += (__builtin_convertvector(sx + half, Int4) > i) & 1;
-    key += (__builtin_convertvector(sy + half, Int4) > j) & 2;
+    for (int d = 0; d < kDim; ++d) key += (__builtin_convertvector(s[d] + half, Int4) > i[d]) & (1 << d);
   }
   return __builtin_convertvector(key, Long4);
 }

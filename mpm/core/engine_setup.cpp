@@ -63,8 +63,8 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   }
   const bool gimp = grid_.cell_type == CellType::Gimp16;
   gimp_margin_ = gimp ? 1.0 : 0.0;
-  // cell_keys computes in 32 bits: the largest key is below 4 x cells.
-  keys_fit_int32_ = 4.0 * static_cast<double>(cells) <= std::numeric_limits<std::int32_t>::max();
+  // cell_keys computes in 32 bits: the largest key is below kKeysPerCell x cells.
+  keys_fit_int32_ = kKeysPerCell * static_cast<double>(cells) <= std::numeric_limits<std::int32_t>::max();
   if (gimp) {
     // uGIMP reaches one node beyond the cell: the lattice must hold CB-Geo's halo ring around the region.
     const double tol = 1e-9;
@@ -187,7 +187,7 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   for (std::size_t p = 0; p < n; ++p) {
     const ParticleRecord& r = deck.particles[p];
     const std::string who = "particle " + std::to_string(r.id);
-    const double coord[kDim] = {r.coord_x, r.coord_y};
+    const std::array<double, kDim> coord = {r.coord_x, r.coord_y};
     bool inside = true;
     for (int d = 0; d < kDim; ++d)
       inside = inside && std::isfinite(coord[d]) && coord[d] >= grid_.region_min[d] && coord[d] <= grid_.region_max[d];
@@ -202,9 +202,8 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
     if (m != 0) uniform_material_ = false;
     cur_.id[p] = r.id;
     cur_.material[p] = static_cast<std::uint32_t>(m);
-    cur_.position[0][p] = r.coord_x;
-    cur_.position[1][p] = r.coord_y;
-    cur_.key[p] = cell_key(r.coord_x, r.coord_y);
+    for (int d = 0; d < kDim; ++d) cur_.position[d][p] = coord[d];
+    cur_.key[p] = cell_key(coord);
     ++per_cell[static_cast<std::size_t>(cell_of(cur_.key[p]))];
   }
   for (std::size_t p = 0; p < n; ++p) {
@@ -260,7 +259,7 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   }
   order_.reserve(n);
   sorted_.resize(n);
-  bucket_.resize(4 * cells + 1);
+  bucket_.resize(kKeysPerCell * cells + 1);
   const std::size_t max_chunks = n / kChunkParticles + 2;
   chunk_.resize(max_chunks + 1);
   bands_.resize(max_chunks);
@@ -268,10 +267,10 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   row_first_chunk_.resize(static_cast<std::size_t>(nodes_per_axis_[1]));
   local_.resize(n);
   mass_.assign(nodes_, 0.0);
-  momentum_.assign(2 * nodes_, 0.0);
-  force_.assign(2 * nodes_, 0.0);
-  velocity_.assign(2 * nodes_, 0.0);
-  updated_.assign(4 * nodes_, 0.0);
+  momentum_.assign(kVectorStride * nodes_, 0.0);
+  force_.assign(kVectorStride * nodes_, 0.0);
+  velocity_.assign(kVectorStride * nodes_, 0.0);
+  updated_.assign(kUpdatedStride * nodes_, 0.0);
   if (nodal_projection(smoothing_).values > 0) nodal_remedy_.assign(3 * nodes_, 0.0);
   problems_.resize(max_chunks);
 

@@ -83,14 +83,14 @@ void Engine::compute_strain_increments(std::size_t c) {
   for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
     const auto first = static_cast<std::size_t>(base_[k]);
     if (run_lane_[k] == 0) {
-      const VelocityGradient4 L = gather_velocity_gradient4(velocity_.data(), 2, first, node_row_stride(),
+      const VelocityGradient4 L = gather_velocity_gradient4(velocity_.data(), kVectorStride, first, node_row_stride(),
                                                             StencilWeights4<W>(&weights_[4 * W * k]));
       for (int l = 0; l < kRunLanes; ++l) L.lane(l).strain_increment(dt_, &dstrain_[3 * (k + l)]);
       k += kRunLanes - 1;
       continue;
     }
     const StencilWeights<W> w(&weights_[4 * W * k]);  // not in a run: a block of its own
-    gather_velocity_gradient(velocity_.data(), 2, first, node_row_stride(), w)
+    gather_velocity_gradient(velocity_.data(), kVectorStride, first, node_row_stride(), w)
         .strain_increment(dt_, &dstrain_[3 * k]);
   }
 }
