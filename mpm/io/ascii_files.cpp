@@ -43,15 +43,25 @@ const std::string& word_of(const std::string& shown, const TextLine& line, std::
   return line.words[word];
 }
 
-/// The "x y" or "x y 0" of one coordinate line of a 2D file; `what` names the line in errors
-/// ("node 3", "particle 7") and `file_kind` the file ("mesh", "deck").
-Eigen::Vector2d parse_xy(const std::string& shown, const TextLine& l, const std::string& what, const char* file_kind) {
+/// The "x y" (or "x y 0") of one coordinate line of a 2D file, the "x y z" of a 3D one; `what` names the
+/// line in errors ("node 3", "particle 7") and `file_kind` the file ("mesh", "deck").
+FilePoint parse_point(const std::string& shown, const TextLine& l, const std::string& what, const char* file_kind, int dim) {
+  FilePoint p{};
+  if (dim == 3) {
+    if (l.words.size() != 3)
+      throw common::InputError(at_line(shown, l.number), what + ": expected \"x y z\", got " + std::to_string(l.words.size()) +
+                                                             " values" + (l.words.size() == 2 ? " (a 2D file in a 3D analysis?)" : ""));
+    for (int d = 0; d < 3; ++d) p[d] = parse_double(shown, l, d);
+    return p;
+  }
   if (l.words.size() != 2 && l.words.size() != 3)
     throw common::InputError(at_line(shown, l.number),
                              what + ": expected \"x y\", got " + std::to_string(l.words.size()) + " values");
   if (l.words.size() == 3 && parse_double(shown, l, 2) != 0.0)
     throw common::InputError(at_line(shown, l.number), what + ": a 2D " + file_kind + " needs z = 0");
-  return {parse_double(shown, l, 0), parse_double(shown, l, 1)};
+  p[0] = parse_double(shown, l, 0);
+  p[1] = parse_double(shown, l, 1);
+  return p;
 }
 
 }  // namespace
@@ -93,7 +103,7 @@ long long parse_integer(const std::string& shown, const TextLine& line, std::siz
   return v;
 }
 
-MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& shown, int nodes_per_cell) {
+MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& shown, int dim, int nodes_per_cell) {
   const auto lines = read_data_lines(file, shown);
   if (lines.empty()) throw common::InputError(shown, "empty file (expected \"nnodes ncells\" on the first line)");
   const TextLine& head = lines.front();
@@ -108,9 +118,10 @@ MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& sh
                                         " cells = " + std::to_string(nnodes + ncells) + " data lines, found " +
                                         std::to_string(found) + (found < nnodes + ncells ? " (truncated file?)" : ""));
   MeshFile mesh;
+  mesh.dim = dim;
   mesh.nodes.reserve(nnodes);
   for (long long k = 1; k <= nnodes; ++k) {
-    mesh.nodes.push_back(parse_xy(shown, lines[k], "node " + std::to_string(k - 1), "mesh"));
+    mesh.nodes.push_back(parse_point(shown, lines[k], "node " + std::to_string(k - 1), "mesh", dim));
   }
   mesh.cells.reserve(ncells);
   for (long long k = nnodes + 1; k < static_cast<long long>(lines.size()); ++k) {
@@ -133,12 +144,12 @@ MeshFile read_mesh_file(const std::filesystem::path& file, const std::string& sh
   return mesh;
 }
 
-std::vector<Eigen::Vector2d> read_particle_coordinates(const std::filesystem::path& file, const std::string& shown) {
+std::vector<FilePoint> read_particle_coordinates(const std::filesystem::path& file, const std::string& shown, int dim) {
   const auto lines = read_counted_lines(file, shown, "particles", " coordinate lines");
-  std::vector<Eigen::Vector2d> xs;
+  std::vector<FilePoint> xs;
   xs.reserve(lines.size() - 1);
   for (std::size_t k = 1; k < lines.size(); ++k) {
-    xs.push_back(parse_xy(shown, lines[k], "particle " + std::to_string(k - 1), "deck"));
+    xs.push_back(parse_point(shown, lines[k], "particle " + std::to_string(k - 1), "deck", dim));
   }
   return xs;
 }
@@ -173,8 +184,9 @@ std::vector<std::vector<double>> read_columns(const std::filesystem::path& file,
   return rows;
 }
 
-int axis_column(const std::string& shown, double value, std::size_t entry) {
-  if (value != 0 && value != 1) throw common::InputError(shown, "entry " + std::to_string(entry) + ": dir must be 0 or 1");
+int axis_column(const std::string& shown, double value, std::size_t entry, int dim) {
+  if (!(value == 0 || value == 1 || (dim == 3 && value == 2)))
+    throw common::InputError(shown, "entry " + std::to_string(entry) + ": dir must be " + (dim == 3 ? "0, 1 or 2" : "0 or 1"));
   return static_cast<int>(value);
 }
 

@@ -14,12 +14,15 @@
 #include "common/json_file.hpp"
 #include "common/number_text.hpp"
 #include "mpm/io/ascii_files.hpp"
+#include "mpm/io/cell_nodes.hpp"
 #include "mpm/io/deck_rules.hpp"
+#include "mpm/io/dimension_keys.hpp"
 #include "mpm/io/external_loads.hpp"
 #include "mpm/io/json_keys.hpp"
 #include "mpm/io/lattice.hpp"
 #include "mpm/io/math_functions.hpp"
 #include "mpm/io/output_keys.hpp"
+#include "mpm/io/particle_generators.hpp"
 #include "mpm/io/particle_table.hpp"
 #include "mpm/io/resume_extras.hpp"
 #include "mpm/io/transfer_keys.hpp"
@@ -83,15 +86,12 @@ EntitySets read_entity_sets(const fs::path& file, const std::string& shown, long
 }
 
 /// Resolved material table.
-MaterialSpec read_material(StrictObject& m) {
+MaterialSpec read_material(StrictObject& m, int dim) {
   MaterialSpec spec;
   const long long id = m.integer("id");
   if (id < 0) m.fail("id", "expected an integer >= 0, got " + std::to_string(id));
   spec.id = static_cast<unsigned>(id);
-  const std::string type = m.string("type");
-  if (type == "LinearElastic2D") spec.type = MaterialType::LinearElastic2D;
-  else if (type == "MohrCoulomb2D") spec.type = MaterialType::MohrCoulomb2D;
-  else m.fail("type", "unsupported material \"" + type + "\" (expected LinearElastic2D or MohrCoulomb2D)");
+  spec.type = read_material_type(m, dim);
   spec.density = m.number_in("density", kDensityRange);
   spec.youngs_modulus = m.number_in("youngs_modulus", kYoungsModulusRange);
   spec.poisson_ratio = m.number_in("poisson_ratio", kPoissonRatioRange);
@@ -120,13 +120,13 @@ MaterialSpec read_material(StrictObject& m) {
   return spec;
 }
 
-std::vector<MaterialSpec> read_materials(StrictObject& root) {
+std::vector<MaterialSpec> read_materials(StrictObject& root, int dim) {
   const json& list = root.required("materials");
   if (!list.is_array() || list.empty()) root.fail("materials", "expected a non-empty array of materials");
   std::vector<MaterialSpec> out;
   for (std::size_t k = 0; k < list.size(); ++k) {
     StrictObject m(list[k], root.file(), "materials[" + std::to_string(k) + "]");
-    MaterialSpec spec = read_material(m);
+    MaterialSpec spec = read_material(m, dim);
     for (const auto& other : out)
       if (other.id == spec.id) m.fail("id", "duplicate material id " + std::to_string(spec.id));
     out.push_back(spec);
@@ -146,10 +146,9 @@ struct ResumeSpec {
   long long step = 0;
 };
 
+/// analysis (its type sets deck.grid.dim).
 void read_analysis(StrictObject& a, Deck& deck, ResumeSpec& resume, std::string& uuid) {
-  const std::string type = a.string("type");
-  if (type == "MPMExplicit3D") a.fail("type", "MPMExplicit3D: this mpm runs 2D analyses only (expected MPMExplicit2D)");
-  if (type != "MPMExplicit2D") a.fail("type", "unsupported analysis \"" + type + "\" (expected MPMExplicit2D)");
+  deck.grid.dim = read_analysis_dimension(a);
   Analysis& an = deck.analysis;
   // CB-Geo's current key is mpm_scheme; older decks call it stress_update. Never a silent default.
   std::string scheme_key = a.has("mpm_scheme") ? "mpm_scheme" : "stress_update";
@@ -226,7 +225,7 @@ std::vector<int> nodes_of_set(StrictObject& c, const Lattice& lattice, const Ent
     if (it == named.end())
       c.fail("nset_id", "no node set named \"" + name + "\"" +
                             (named.empty() ? " (named sets exist only on a generated grid)"
-                                           : " (expected left, right, bottom, top or all)"));
+                                           : " (expected " + boundary_set_names(lattice.grid.dim) + ")"));
     return it->second;
   }
   const long long nset = c.integer("nset_id");
@@ -263,14 +262,14 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         for (std::size_t r = 0; r < rows.size(); ++r) {
           VelocityConstraint vc;
           vc.nodes = {file_node(lattice, f, rows[r][0], static_cast<int>(r))};
-          vc.dir = axis_column(f, rows[r][1], r);
+          vc.dir = axis_column(f, rows[r][1], r, lattice.grid.dim);
           vc.velocity = rows[r][2];
           deck.velocity_constraints.push_back(vc);
         }
       } else {
         VelocityConstraint vc;
         vc.nodes = node_set(c);
-        vc.dir = read_axis(c);
+        vc.dir = read_axis(c, lattice.grid.dim);
         vc.velocity = c.number("velocity");
         deck.velocity_constraints.push_back(std::move(vc));
       }
@@ -299,7 +298,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
         for (std::size_t r = 0; r < rows.size(); ++r) {
           FrictionConstraint fc;
           fc.nodes = {file_node(lattice, f, rows[r][0], static_cast<int>(r))};
-          fc.dir = axis_column(f, rows[r][1], r);
+          fc.dir = axis_column(f, rows[r][1], r, lattice.grid.dim);
           check(rows[r][2], rows[r][3], [&](const std::string& w) { throw common::InputError(f, "entry " + std::to_string(r) + ": " + w); });
           fc.sign_n = static_cast<int>(rows[r][2]);
           fc.friction = rows[r][3];
@@ -310,7 +309,7 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
       } else {
         FrictionConstraint fc;
         fc.nodes = node_set(c);
-        fc.dir = read_axis(c);
+        fc.dir = read_axis(c, lattice.grid.dim);
         const long long sign = c.integer("sign_n");
         if (sign != 1 && sign != -1) c.fail("sign_n", "expected -1 or 1, got " + std::to_string(sign));
         fc.sign_n = static_cast<int>(sign);
@@ -325,123 +324,10 @@ void read_boundary_conditions(StrictObject& bc, const Lattice& lattice, const En
   bc.finish();
 }
 
-/// Gauss-Legendre points on [-1, 1] for n = 1..5 (the points of CB-Geo's quadrature of that order).
-std::vector<double> gauss_points(int n) {
-  switch (n) {
-    case 1: return {0.0};
-    case 2: return {-1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
-    case 3: return {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
-    case 4: {
-      const double a = std::sqrt(3.0 / 7 - 2.0 / 7 * std::sqrt(1.2)), b = std::sqrt(3.0 / 7 + 2.0 / 7 * std::sqrt(1.2));
-      return {-b, -a, a, b};
-    }
-    default: {
-      const double a = std::sqrt(5 - 2 * std::sqrt(10.0 / 7)) / 3, b = std::sqrt(5 + 2 * std::sqrt(10.0 / 7)) / 3;
-      return {-b, -a, 0.0, a, b};
-    }
-  }
-}
-
-struct GeneratedParticles {
-  std::vector<ParticleRecord> records;
-  std::map<long long, std::vector<long long>> psets;  ///< from the generators' pset_id
-};
-
-void read_generators(StrictObject& root, const Deck& deck, const Lattice& lattice, const EntitySets& sets,
-                     const fs::path& dir, bool load_files, GeneratedParticles& out) {
-  const json& list = root.required("particles");
-  if (!list.is_array() || list.empty()) root.fail("particles", "expected a non-empty array of {\"generator\": {...}}");
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    StrictObject entry(list[k], root.file(), "particles[" + std::to_string(k) + "]");
-    StrictObject g = entry.object("generator");
-    const std::string type = g.string("type");
-    const long long material = g.integer("material_id");
-    if (!find_material(deck.materials, material))
-      g.fail("material_id", "material " + std::to_string(material) + " is not defined in materials");
-    g.accept_only("particle_type", {"P2D"}, "single-phase 2D particles");
-    g.accept_only("io_type", {"Ascii2D"}, "the only particle file format read");
-    g.boolean_or("check_duplicates", false);  // duplicates are always checked: no particle file may repeat a point
-    const long long pset = g.integer_or("pset_id", -1);
-    std::vector<Eigen::Vector2d> xs;
-    std::string shown;
-    if (type == "file") {
-      shown = g.string("location");
-      if (load_files) xs = read_particle_coordinates(dir / shown, shown);
-    } else if (type == "gauss") {
-      const long long nppd = g.integer("nparticles_per_dir");
-      if (nppd < 1 || nppd > 5) g.fail("nparticles_per_dir", "expected an integer in 1..5, got " + std::to_string(nppd));
-      const long long cset = g.integer("cset_id");
-      std::vector<long long> cells;
-      if (cset == -1) {
-        for (std::size_t c = 0; c < lattice.cell_ij.size(); ++c) cells.push_back(static_cast<long long>(c));
-      } else {
-        const auto it = sets.cells.find(cset);
-        if (it == sets.cells.end()) g.fail("cset_id", "cell set " + std::to_string(cset) + " is not defined in the entity sets");
-        cells = it->second;
-      }
-      // Counted before generating: 1e8 cells x 25 points must be an error, not std::bad_alloc.
-      if (const auto problem = common::size_problem(static_cast<double>(cells.size()) * static_cast<double>(nppd * nppd),
-                                                    sizeof(ParticleRecord), "particles");
-          !problem.empty())
-        g.fail("nparticles_per_dir", problem);
-      const auto pts = gauss_points(static_cast<int>(nppd));
-      for (long long c : cells) {
-        const auto [i, j] = lattice.cell_ij[c];
-        const auto& origin = deck.grid.origin;
-        const auto& h = deck.grid.spacing;
-        const double xc = origin[0] + (i + 0.5) * h[0], yc = origin[1] + (j + 0.5) * h[1];
-        for (double eta : pts)
-          for (double xi : pts) xs.emplace_back(xc + 0.5 * h[0] * xi, yc + 0.5 * h[1] * eta);
-      }
-      shown = g.where("cset_id");
-    } else {
-      g.fail("type", "unsupported generator \"" + type + "\" (expected file or gauss)");
-    }
-    g.finish();
-    entry.finish();
-    for (std::size_t p = 0; p < xs.size(); ++p) {
-      ParticleRecord r{};
-      r.id = static_cast<std::int64_t>(out.records.size());
-      r.coord_x = xs[p].x();
-      r.coord_y = xs[p].y();
-      r.material_id = static_cast<std::uint32_t>(material);
-      r.status = 1;
-      r.cell_id = -1;
-      const auto& lo = deck.grid.region_min;
-      const auto& hi = deck.grid.region_max;
-      if (!(r.coord_x >= lo[0] && r.coord_x <= hi[0] && r.coord_y >= lo[1] && r.coord_y <= hi[1]))
-        throw common::InputError(shown, "particle " + std::to_string(p) + " at (" + num(r.coord_x) + ", " + num(r.coord_y) +
-                                            ") is outside the grid's cells [" + num(lo[0]) + ", " + num(hi[0]) + "] x [" +
-                                            num(lo[1]) + ", " + num(hi[1]) + "]");
-      if (pset >= 0) out.psets[pset].push_back(r.id);
-      out.records.push_back(r);
-    }
-  }
-}
-
-/// Lattice cell of a point inside the grid (points on the upper edges belong to the last cell).
-long cell_of(const Grid& g, double x, double y) {
-  const int cells_x = g.nodes_per_axis[0] - 1, cells_y = g.nodes_per_axis[1] - 1;
-  const int i = std::clamp(static_cast<int>(std::floor((x - g.origin[0]) / g.spacing[0])), 0, cells_x - 1);
-  const int j = std::clamp(static_cast<int>(std::floor((y - g.origin[1]) / g.spacing[1])), 0, cells_y - 1);
-  return i + static_cast<long>(j) * cells_x;
-}
-
-void check_no_duplicates(const std::vector<ParticleRecord>& ps, const std::string& where) {
-  std::vector<std::pair<std::pair<double, double>, std::int64_t>> keyed;
-  for (const auto& p : ps) keyed.push_back({{p.coord_x, p.coord_y}, p.id});
-  std::sort(keyed.begin(), keyed.end());
-  for (std::size_t k = 1; k < keyed.size(); ++k)
-    if (keyed[k].first == keyed[k - 1].first)
-      throw common::InputError(where, "particles " + std::to_string(keyed[k - 1].second) + " and " +
-                                          std::to_string(keyed[k].second) + " are at the same point (" +
-                                          num(keyed[k].first.first) + ", " + num(keyed[k].first.second) + ")");
-}
-
 /// external_loading_conditions.base_acceleration: {"dir": 0 or 1, "acceleration": m/s2, "math_function_id"}.
-BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned, MathFunction>& functions) {
+BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned, MathFunction>& functions, int dim) {
   BaseAcceleration out;
-  out.dir = read_axis(b);
+  out.dir = read_axis(b, dim);
   out.acceleration = b.number_in("acceleration", kFiniteRange);
   out.history = math_function_of(b, functions);
   b.finish();
@@ -480,16 +366,13 @@ void read_loads(StrictObject& root, Deck& deck, const Lattice& lattice, const En
   const json* loads = root.optional("external_loading_conditions");
   if (loads == nullptr) return;
   StrictObject l(*loads, root.file(), "external_loading_conditions");
-  if (const json* g = l.optional("gravity")) {  // absent: no gravity, as without the block
-    if (!g->is_array() || g->size() != 2 || !(*g)[0].is_number() || !(*g)[1].is_number())
-      l.fail("gravity", "expected [gx, gy] (2 numbers, m/s^2)");
-    deck.analysis.gravity = Eigen::Vector2d((*g)[0].get<double>(), (*g)[1].get<double>());
-  }
+  read_gravity(l, deck.grid.dim, deck.analysis);
   if (l.has("base_acceleration")) {
     StrictObject b = l.object("base_acceleration");
-    deck.base_acceleration = read_base_acceleration(b, math_functions);
+    deck.base_acceleration = read_base_acceleration(b, math_functions, deck.grid.dim);
   }
   LoadSets load_sets;
+  load_sets.dim = deck.grid.dim;
   load_sets.nodes = [&](StrictObject& c) { return nodes_of_set(c, lattice, sets, named); };
   load_sets.file_node = [&](const std::string& shown, double id, int entry) { return file_node(lattice, shown, id, entry); };
   load_sets.particles = [&](StrictObject& c) {
@@ -533,7 +416,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     StrictObject a = root.object("analysis");
     read_analysis(a, deck, resume, uuid);
   }
-  deck.materials = read_materials(root);
+  deck.materials = read_materials(root, deck.grid.dim);
 
   // post_processing.
   {
@@ -549,40 +432,46 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
 
   // mesh.
   StrictObject mesh = root.object("mesh");
-  mesh.accept_only("io_type", {"Ascii2D"}, "the only mesh format read");
-  mesh.accept_only("node_type", {"N2D"}, "single-phase 2D nodes");
-  mesh.boolean_or("isoparametric", false);  // cells are rectangles: both mappings are the same
+  const int dim = deck.grid.dim;
+  mesh.boolean_or("isoparametric", false);  // cells are rectangles (boxes): both mappings are the same
   mesh.boolean_or("check_duplicates", false);  // the lattice check rejects duplicate nodes and cells always
-  const std::string cell_type = mesh.string("cell_type");
-  CellType type = CellType::Linear4;
-  if (cell_type == "ED2Q4") type = CellType::Linear4;
-  else if (cell_type == "ED2Q16G") type = CellType::Gimp16;
-  else if (cell_type == "ED3H8" || cell_type == "ED3H64G")
-    mesh.fail("cell_type", "a 3D cell type (\"" + cell_type + "\") in a 2D analysis (expected ED2Q4 or ED2Q16G)");
-  else mesh.fail("cell_type", "unsupported cell type \"" + cell_type + "\" (expected ED2Q4 or ED2Q16G)");
+  const CellType type = read_mesh_cell_type(mesh, dim);
   Lattice lattice;
   std::map<std::string, std::vector<int>> named_sets;
   if (const json* gen = mesh.optional("generator")) {  // extension: a generated grid, no mesh file
     if (mesh.has("mesh")) mesh.fail("mesh", "give a mesh file or a generator, not both");
     StrictObject g(*gen, shown, "mesh.generator");
-    auto pair = [&](const char* key, bool integer) {
+    // [a, b] in 2D, [a, b, c] in 3D.
+    auto tuple = [&](const char* key, bool integer) {
       const json& v = g.required(key);
-      if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number() ||
-          (integer && !(v[0].is_number_integer() && v[1].is_number_integer())))
-        g.fail(key, std::string("expected [") + (integer ? "nx, ny] (2 integers)" : "x, y] (2 numbers)"));
-      return Eigen::Vector2d(v[0].get<double>(), v[1].get<double>());
+      bool ok = v.is_array() && v.size() == static_cast<std::size_t>(dim);
+      for (std::size_t k = 0; ok && k < v.size(); ++k) ok = v[k].is_number() && (!integer || v[k].is_number_integer());
+      if (!ok)
+        g.fail(key, dim == 3 ? std::string("expected [") + (integer ? "nx, ny, nz] (3 integers)" : "x, y, z] (3 numbers)")
+                             : std::string("expected [") + (integer ? "nx, ny] (2 integers)" : "x, y] (2 numbers)"));
+      std::array<double, kMaxDim> out{};
+      for (int d = 0; d < dim; ++d) out[d] = v[d].get<double>();
+      return out;
     };
-    const Eigen::Vector2d origin = pair("origin", false), h = pair("cell_size", false), n = pair("cells", true);
-    if (!(h.x() > 0 && h.y() > 0)) g.fail("cell_size", "expected sizes > 0");
-    if (!(n.x() >= 1 && n.y() >= 1 && n.x() * n.y() <= 1e8)) g.fail("cells", "expected 1 to 1e8 cells");
-    // The lattice holds ~16 node ids and a few coordinates per cell.
-    if (const auto problem = common::size_problem(n.x() * n.y(), 256, "cells"); !problem.empty()) g.fail("cells", problem);
+    const auto origin = tuple("origin", false), h = tuple("cell_size", false), n = tuple("cells", true);
+    double cells = 1;
+    std::array<int, kMaxDim> counts{};
+    for (int d = 0; d < dim; ++d)
+      if (!(h[d] > 0)) g.fail("cell_size", "expected sizes > 0");
+    for (int d = 0; d < dim; ++d) {
+      cells *= n[d];
+      if (!(n[d] >= 1 && cells <= 1e8)) g.fail("cells", "expected 1 to 1e8 cells");
+      counts[d] = static_cast<int>(n[d]);
+    }
+    // The lattice holds ~16 (3D: 64) node ids and a few coordinates per cell.
+    if (const auto problem = common::size_problem(cells, dim == 3 ? 1024 : 256, "cells"); !problem.empty()) g.fail("cells", problem);
     g.finish();
-    lattice = generate_lattice(origin, h, static_cast<int>(n.x()), static_cast<int>(n.y()), type);
+    lattice = generate_lattice(dim, origin, h, counts, type);
     named_sets = boundary_node_sets(lattice.grid);
   } else {
     const std::string mesh_file = mesh.string("mesh");
-    const MeshFile mf = read_mesh_file(dir / mesh_file, mesh_file, type == CellType::Gimp16 ? 16 : 4);
+    const auto nodes_per_cell = static_cast<int>(cell_node_natural_coordinates(type, dim).size());
+    const MeshFile mf = read_mesh_file(dir / mesh_file, mesh_file, dim, nodes_per_cell);
     lattice = recognise_lattice(mf, type, mesh_file);
   }
   deck.grid = lattice.grid;
@@ -600,8 +489,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
   }
 
   // particles: generators, or the resume file.
-  GeneratedParticles gen;
-  read_generators(root, deck, lattice, sets, dir, !resume.resume, gen);
+  GeneratedParticles gen = read_generators(root, deck.materials, lattice, sets.cells, dir, !resume.resume);
   const auto stresses_key = mesh.optional("particles_stresses");
   const auto volumes_key = mesh.optional("particles_volumes");
   const auto cells_key = mesh.optional("particle_cells");
@@ -619,18 +507,20 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
       if (!find_material(deck.materials, p.material_id))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": material_id " + std::to_string(p.material_id) +
                                              " is not defined in " + shown + " materials");
-      const auto& lo = deck.grid.region_min;
-      const auto& hi = deck.grid.region_max;
-      if (!(p.coord_x >= lo[0] && p.coord_x <= hi[0] && p.coord_y >= lo[1] && p.coord_y <= hi[1]))
-        throw common::InputError(rshown, "particle " + std::to_string(p.id) + " at (" + num(p.coord_x) + ", " + num(p.coord_y) +
-                                             ") is outside the grid's cells");
+      if (!inside_region(deck.grid, p))
+        throw common::InputError(rshown, "particle " + std::to_string(p.id) + " at " + position_text(p, deck.grid.dim) +
+                                             " is outside the grid's cells");
       if (!(p.mass > 0) || !(p.volume > 0))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + ": mass and volume must be > 0");
       // CB-Geo's 2D tables hold z = 0 (coordinate, displacement, velocity, size); a 3D table's particles do not.
-      if (p.coord_z != 0 || p.displacement_z != 0 || p.velocity_z != 0 || p.nsize_z != 0)
+      if (deck.grid.dim == 2 && (p.coord_z != 0 || p.displacement_z != 0 || p.velocity_z != 0 || p.nsize_z != 0))
         throw common::InputError(rshown, "particle " + std::to_string(p.id) + " has a z coordinate, displacement, velocity or size (z " +
                                              num(p.coord_z) + ", nsize_z " + num(p.nsize_z) +
                                              "): a 3D particle table on a 2D deck (MPMExplicit2D reads x and y)");
+      // and a 2D table's particles have a size in x and y but none in z (CB-Geo's 3D tables: 2/ppd on each axis).
+      if (deck.grid.dim == 3 && p.nsize_z == 0 && (p.nsize_x != 0 || p.nsize_y != 0))
+        throw common::InputError(rshown, "particle " + std::to_string(p.id) + " has a size in x and y but none in z (nsize_x " +
+                                             num(p.nsize_x) + ", nsize_z 0): a 2D particle table on a 3D deck");
     }
     read_resume_extras(file, shown, rshown, deck);
     sort_by_id(deck);
@@ -660,7 +550,7 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
     }
     // Per-cell counts (CB-Geo's default volume and size use them).
     std::map<long, int> per_cell;
-    for (const auto& p : deck.particles) ++per_cell[cell_of(deck.grid, p.coord_x, p.coord_y)];
+    for (const auto& p : deck.particles) ++per_cell[cell_of(deck.grid, position_of(p))];
     if (volumes_key) {
       if (!volumes_key->is_string()) throw common::InputError(shown + ": mesh.particles_volumes", "expected a file name");
       const std::string f = volumes_key->get<std::string>();
@@ -672,8 +562,11 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
         auto& p = deck.particles[static_cast<std::size_t>(id)];
         p.volume = row[1];
         p.mass = find_material(deck.materials, p.material_id)->density * p.volume;
-        const double nsize = 2.0 / std::sqrt(static_cast<double>(per_cell[cell_of(deck.grid, p.coord_x, p.coord_y)]));
+        // 2 / (particles per direction): the square (3D: cube) root of the particles in the cell.
+        const double count = static_cast<double>(per_cell[cell_of(deck.grid, position_of(p))]);
+        const double nsize = 2.0 / (deck.grid.dim == 3 ? std::cbrt(count) : std::sqrt(count));
         p.nsize_x = p.nsize_y = nsize;
+        if (deck.grid.dim == 3) p.nsize_z = nsize;
       }
     }
     if (cells_key) {
@@ -686,13 +579,16 @@ Deck read_deck(const fs::path& working_dir, const std::string& input_file) {
         if (cid != std::round(cid) || cid < 0 || cid >= static_cast<double>(lattice.cell_ij.size()))
           throw common::InputError(f, "cell id " + num(cid) + " is not a cell of the mesh");
         const auto& p = deck.particles[static_cast<std::size_t>(pid)];
-        const auto [i, j] = lattice.cell_ij[static_cast<std::size_t>(cid)];
+        const LatticeCell& cell = lattice.cell_ij[static_cast<std::size_t>(cid)];
         const auto& h = deck.grid.spacing;
-        const double x0 = deck.grid.origin[0] + i * h[0], y0 = deck.grid.origin[1] + j * h[1];
-        const double eps = 1e-9 * std::max(h[0], h[1]);
-        if (p.coord_x < x0 - eps || p.coord_x > x0 + h[0] + eps || p.coord_y < y0 - eps || p.coord_y > y0 + h[1] + eps)
-          throw common::InputError(f, "particle " + num(pid) + " at (" + num(p.coord_x) + ", " + num(p.coord_y) +
-                                          ") is not inside cell " + num(cid));
+        const auto x = position_of(p);
+        const double eps = 1e-9 * *std::max_element(h.begin(), h.begin() + deck.grid.dim);
+        for (int d = 0; d < deck.grid.dim; ++d) {
+          const double lo = deck.grid.origin[d] + cell[d] * h[d];
+          if (x[d] < lo - eps || x[d] > lo + h[d] + eps)
+            throw common::InputError(f, "particle " + num(pid) + " at " + position_text(p, deck.grid.dim) + " is not inside cell " +
+                                            num(cid));
+        }
       }
     }
   }

@@ -43,7 +43,7 @@ std::vector<NodalForce> read_nodal_forces(StrictObject& loads, const std::map<un
       for (std::size_t r = 0; r < rows.size(); ++r) {
         NodalForce nf;
         nf.nodes = {sets.file_node(f, rows[r][0], static_cast<int>(r))};
-        nf.dir = axis_column(f, rows[r][1], r);
+        nf.dir = axis_column(f, rows[r][1], r, sets.dim);
         nf.force = rows[r][2];
         out.push_back(std::move(nf));
       }
@@ -51,7 +51,7 @@ std::vector<NodalForce> read_nodal_forces(StrictObject& loads, const std::map<un
     }
     NodalForce nf;
     nf.nodes = sets.nodes(entry);
-    nf.dir = read_axis(entry);
+    nf.dir = read_axis(entry, sets.dim);
     nf.force = entry.number_in("force", kFiniteRange);
     nf.function = function_of(entry, functions);
     out.push_back(std::move(nf));
@@ -66,7 +66,7 @@ std::vector<ParticleTraction> read_particle_tractions(StrictObject& loads,
   for_each_entry(loads, "particle_surface_traction", [&](StrictObject& entry) {
     ParticleTraction pt;
     pt.particles = sets.particles(entry);
-    pt.dir = read_axis(entry);
+    pt.dir = read_axis(entry, sets.dim);
     pt.traction = entry.number_in("traction", kFiniteRange);
     pt.function = function_of(entry, functions);
     out.push_back(std::move(pt));

@@ -17,6 +17,7 @@ class StrictObject;
 /// What the deck reader resolves for the loads: the nodes of an entry's `nset_id` and the particles of its
 /// `pset_id` (each fails naming the key), and the lattice index of a node id read from a file.
 struct LoadSets {
+  int dim = 2;  ///< the deck's dimension: the `dir` keys and columns take 0 .. dim - 1
   std::function<std::vector<int>(StrictObject&)> nodes;
   std::function<std::vector<std::int64_t>(StrictObject&)> particles;
   std::function<int(const std::string& shown, double node_id, int entry)> file_node;

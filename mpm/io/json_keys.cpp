@@ -110,9 +110,11 @@ void StrictObject::finish() const {
     if (!taken_.count(it.key())) fail(it.key(), "unsupported key");
 }
 
-int read_axis(StrictObject& entry) {
+int read_axis(StrictObject& entry, int dim) {
   const long long dir = entry.integer("dir");
-  if (dir != 0 && dir != 1) entry.fail("dir", "expected 0 (x) or 1 (y), got " + std::to_string(dir));
+  if (dir < 0 || dir >= dim)
+    entry.fail("dir", std::string(dim == 3 ? "expected 0 (x), 1 (y) or 2 (z)" : "expected 0 (x) or 1 (y)") + ", got " +
+                          std::to_string(dir));
   return static_cast<int>(dir);
 }
 

@@ -58,8 +58,8 @@ class StrictObject {
 /// Short description of a JSON value's kind for messages ("a string", "an array", ...).
 std::string json_kind(const nlohmann::json& value);
 
-/// The deck's `dir` key of `entry` (a constraint, a load, the base acceleration): 0 (x) or 1 (y); fails
-/// naming the key otherwise.
-int read_axis(StrictObject& entry);
+/// The deck's `dir` key of `entry` (a constraint, a load, the base acceleration): 0 (x), 1 (y) or, with
+/// `dim` 3, 2 (z); fails naming the key otherwise.
+int read_axis(StrictObject& entry, int dim = 2);
 
 }  // namespace mpm::io

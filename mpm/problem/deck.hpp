@@ -18,7 +18,10 @@
 
 namespace mpm {
 
-enum class CellType { Linear4 /* ED2Q4 */, Gimp16 /* ED2Q16G */ };
+/// The shape functions on the lattice's cells: linear (CB-Geo's ED2Q4, ED3H8) or GIMP over the cell and its
+/// halo of neighbouring nodes (ED2Q16G, ED3H64G). The 3D names are the same families as the 2D ones (equal
+/// values): the dimension is Grid::dim, so `cell_type == CellType::Gimp16` means GIMP in 2D and 3D alike.
+enum class CellType { Linear4 /* ED2Q4 */, Gimp16 /* ED2Q16G */, Linear8 = Linear4 /* ED3H8 */, Gimp64 = Gimp16 /* ED3H64G */ };
 enum class Scheme { USF, USL, MUSL };
 /// The particle-grid velocity transfer (analysis.transfer; mpm/core/velocity_transfer.hpp).
 enum class Transfer { FLIP, PIC, APIC };
@@ -31,7 +34,7 @@ inline constexpr int kMaxDim = 3;
 /// nodes_per_axis[1] * k)). Entries d >= dim are unused. For GIMP decks the lattice includes CB-Geo's
 /// halo ring of nodes.
 struct Grid {
-  /// The problem's dimension: 2 for every deck read today (MPMExplicit2D, Ascii2D), 3 for CB-Geo's 3D decks.
+  /// The problem's dimension: 2 for MPMExplicit2D decks (Ascii2D), 3 for MPMExplicit3D decks (Ascii3D).
   int dim = 2;
   std::array<double, kMaxDim> origin{};          ///< coordinates of node 0, m
   std::array<double, kMaxDim> spacing{1, 1, 1};  ///< cell size, m
@@ -48,7 +51,7 @@ struct Grid {
   }
 };
 
-/// CB-Geo velocity constraint: velocity component `dir` (0 = x, 1 = y) fixed to `velocity` on `nodes`.
+/// CB-Geo velocity constraint: velocity component `dir` (0 = x, 1 = y, 2 = z in 3D) fixed to `velocity` on `nodes`.
 struct VelocityConstraint {
   std::vector<int> nodes;  ///< lattice node indices
   int dir = 0;
@@ -68,7 +71,14 @@ struct FrictionConstraint {
   double lag_reference_velocity = 0;
 };
 
-enum class MaterialType { LinearElastic2D, MohrCoulomb2D };
+/// The constitutive model. CB-Geo names each model per dimension (LinearElastic2D / LinearElastic3D); the 3D
+/// names are the same models as the 2D ones (equal values), the dimension being Grid::dim.
+enum class MaterialType {
+  LinearElastic2D,
+  MohrCoulomb2D,
+  LinearElastic3D = LinearElastic2D,
+  MohrCoulomb3D = MohrCoulomb2D
+};
 
 /// A Mohr-Coulomb particle whose volume has grown past 3 times its initial one (porosity 0.4 -> 0.8) is
 /// taken as disconnected grains: no soil skeleton carries stress that loose (mpm/core/materials.hpp).
@@ -99,7 +109,8 @@ struct Analysis {
   double cfl = 0;                ///< extension: automatic dt = cfl * h / c_p when > 0
   long long nsteps = 0;
   double cundall_damping = 0;    ///< Cundall local damping factor (0 = none)
-  Eigen::Vector2d gravity = Eigen::Vector2d::Zero();
+  Eigen::Vector2d gravity = Eigen::Vector2d::Zero();  ///< m/s2, x and y
+  double gravity_z = 0;  ///< m/s2, the z component of a 3D deck's gravity (0 in 2D)
   std::string stress_smoothing = "none";  ///< extension: checkerboard remedy ("none" or a named method)
 };
 

@@ -12,8 +12,11 @@ namespace mpm {
 
 inline constexpr std::size_t kMaxStateVariables = 20;
 
-/// One particle as CB-Geo stores it. The byte layout matches CB-Geo's struct (cell_id before
-/// status in memory; in the file's member list status comes first). Value-initialise it
+/// One particle as CB-Geo stores it, in 2D and 3D alike (CB-Geo's HDF5Particle has the same 53 members in
+/// both): a 3D particle uses every member (x y z; stresses xx yy zz xy yz xz; engineering strains in the same
+/// order), a 2D one holds z = 0 in its coordinate, displacement, velocity and size, and tau_yz = tau_xz = 0.
+/// The byte layout matches CB-Geo's struct (cell_id before status in memory; in the file's member list
+/// status comes first). Value-initialise it
 /// (`ParticleRecord r{};`) so padding bytes are zero and files are byte-reproducible.
 struct ParticleRecord {
   std::int64_t id = 0;

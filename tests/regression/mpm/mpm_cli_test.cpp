@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mpm_run.hpp"
+#include "support/mpm_deck_3d.hpp"
 
 using namespace mpm_regression;
 using nlohmann::json;
@@ -174,6 +175,30 @@ TEST(MpmBadInput, ExitsTwoWithOneLineNamingTheProblemAndWritesNothing) {
   EXPECT_NE(r.err.find("absent.json"), std::string::npos) << r.err;
   r = run_mpm(dir, "mpm.json", "--threads -3");
   EXPECT_EQ(r.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir / "results"));
+}
+
+// Issue 37: a CB-Geo 3D deck (MPMExplicit3D, Ascii3D, ED3H8; tests/support/mpm_deck_3d.hpp) is read
+// (tests/unit/mpm/deck_reader_3d_test.cpp) and, while the engine runs 2D problems only, ends with the
+// engine's one-line refusal and exit 2, writing nothing; a bad 3D deck ends at the reader's line. When the
+// engine runs 3D problems, the first case becomes a run.
+TEST(MpmBadInput, ThreeDimensionalDeckEndsWithTheEnginesRefusalOrTheReadersLine) {
+  const fs::path dir = scratch_root() / "deck_3d";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  json deck = test_support::SmallDeck3d::write(dir);
+  save(dir / "mpm.json", deck);
+  auto r = run_mpm(dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("a 3D grid: this engine runs 2D problems only"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "results"));
+  deck["mesh"]["cell_type"] = "ED2Q16G";
+  save(dir / "mpm.json", deck);
+  r = run_mpm(dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_NE(r.err.find("mpm.json: mesh.cell_type: a 2D cell type (\"ED2Q16G\") in a 3D analysis"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "results"));
 }
 

@@ -344,12 +344,12 @@ TEST(DeckReaderErrors, UnknownSchemeIsNotSilentlyUsf) {
   EXPECT_MESSAGE_HAS(d.error(), "analysis.mpm_scheme: unknown scheme \"usx\"");
 }
 
-// Issue 37's bad input: CB-Geo's 3D decks and particle tables on this 2D reader are one line naming the key or
-// the file, never read as 2D.
+// Issue 37's bad input: a 2D deck's keys in a 3D analysis and 3D cells or particle tables in a 2D one are one
+// line naming the key or the file, never read in the other dimension (deck_reader_3d_test.cpp: the 3D decks).
 TEST(DeckReaderErrors, ThreeDimensionalDecksAndCellsAreNamed) {
   SmallDeck analysis("mpm3d");
   analysis.deck["analysis"]["type"] = "MPMExplicit3D";
-  EXPECT_MESSAGE_HAS(analysis.error(), "analysis.type: MPMExplicit3D: this mpm runs 2D analyses only");
+  EXPECT_MESSAGE_HAS(analysis.error(), "materials[0].type: a 2D material (\"LinearElastic2D\") in a 3D analysis");
   for (const char* cell : {"ED3H8", "ED3H64G"}) {
     SmallDeck d(std::string("cell_") + cell);
     d.deck["mesh"]["cell_type"] = cell;
