@@ -3,15 +3,20 @@
 // and friction constraints are in nodal_constraints.hpp.
 #include <cmath>
 
+#include "mpm/core/nodal_constraints.hpp"
+
 namespace mpm::core {
 
 /// Cundall's local non-viscous damping of the unbalanced nodal force (Cundall 1987; CB-Geo
-/// compute_acceleration_velocity_cundall): f_i - alpha |f| sign(v_i), per component, |f| the norm.
-inline void apply_cundall_damping(double alpha, double& fx, double& fy, double vx, double vy) {
-  const auto sign_of = [](double v) { return v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0); };
-  const double fn = std::sqrt(fx * fx + fy * fy);
-  fx -= alpha * fn * sign_of(vx);
-  fy -= alpha * fn * sign_of(vy);
+/// compute_acceleration_velocity_cundall): f_d - alpha |f| sign(v_d) for each axis d, |f| the norm
+/// (summed from axis 0 on: in 2D sqrt(fx fx + fy fy), as before the axes).
+template <int dim>
+inline void apply_cundall_damping(double alpha, Vector<dim>& f, const Vector<dim>& v) {
+  const auto sign_of = [](double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); };
+  double f2 = f[0] * f[0];
+  for (int d = 1; d < dim; ++d) f2 += f[d] * f[d];
+  const double fn = std::sqrt(f2);
+  for (int d = 0; d < dim; ++d) f[d] -= alpha * fn * sign_of(v[d]);
 }
 
 }  // namespace mpm::core

@@ -44,8 +44,7 @@ std::int64_t Engine::cell_key(std::array<double, kDim> x) const {
 void Engine::step() {
   for (std::size_t c = 0; c < chunks_; ++c) problems_[c] = Problem{};
   const Vec2 b = body_force_.at(time());
-  gx_ = b.x();
-  gy_ = b.y();
+  for (int d = 0; d < kDim; ++d) body_force_now_[d] = b[d];
   loads_.set_time(time());
   find_wall_contacts();
   merge_.start(chunks_, threads_);  // g2p_chunk records each chunk's kept particles and movers
@@ -237,62 +236,59 @@ void Engine::reduce_row(int j, GridFields summed) {
 void Engine::nodal_velocity_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
-    double vx = 0.0, vy = 0.0;
-    if (mass_[n] > mass_tolerance_) {
-      vx = momentum_[kVectorStride * n] / mass_[n];
-      vy = momentum_[kVectorStride * n + 1] / mass_[n];
-    }
-    if (const std::int32_t c = constraint_of_[n]; c >= 0) {
-      const Vec2 v = strain_rate_velocity(Vec2(vx, vy), constraint_now(c));
-      vx = v.x();
-      vy = v.y();
-    }
-    velocity_[kVectorStride * n] = vx;
-    velocity_[kVectorStride * n + 1] = vy;
+    Vector<kDim> v = Vector<kDim>::Zero();
+    if (mass_[n] > mass_tolerance_)
+      for (int d = 0; d < kDim; ++d) v[d] = momentum_[kVectorStride * n + d] / mass_[n];
+    if (const std::int32_t c = constraint_of_[n]; c >= 0) v = strain_rate_velocity(v, constraint_now(c));
+    for (int d = 0; d < kDim; ++d) velocity_[kVectorStride * n + d] = v[d];
   }
 }
 
-/// Explicit grid update (Sulsky et al. 1994, eq. 18): a = f / m, f with the concentrated nodal forces
-/// (external_loads.hpp), with Cundall's local damping
-/// f - alpha |f| sign(v) (Cundall 1987; CB-Geo compute_acceleration_velocity_cundall), v_new = v + a dt
-/// (a = g below the small-mass cutoff); at a constrained node the friction and velocity constraints in
-/// momentum form (nodal_constraints.hpp), and the rate (v_new - v_old) / dt handed to FLIP in place of a.
+/// Explicit grid update (Sulsky et al. 1994, eq. 18), per axis d: a_d = f_d / m, f with the concentrated
+/// nodal forces (external_loads.hpp), with Cundall's local damping f - alpha |f| sign(v) (Cundall 1987;
+/// CB-Geo compute_acceleration_velocity_cundall; boundary_rules.hpp), v_new = v + a dt (a = b, the body
+/// force per unit mass, below the small-mass cutoff); at a constrained node the friction and velocity
+/// constraints in momentum form (nodal_constraints.hpp), and the rate (v_new - v_old) / dt handed to FLIP
+/// in place of a. updated_ holds v_new, then a, kDim values each.
 void Engine::integrate_row(int j) {
   for (int i = bi0_; i < bi1_; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     double* u = &updated_[kUpdatedStride * n];
     const double m = mass_[n];
     if (!(m > mass_tolerance_)) {
-      u[0] = u[1] = u[2] = u[3] = 0.0;
+      std::fill_n(u, kUpdatedStride, 0.0);
       if (lagged_friction_ && constraint_of_[n] >= 0) normal_memory_[static_cast<std::size_t>(constraint_of_[n])].forget();
       continue;
     }
-    const double vx = velocity_[kVectorStride * n], vy = velocity_[kVectorStride * n + 1];
-    double fx = force_[kVectorStride * n], fy = force_[kVectorStride * n + 1];
-    if (loads_.has_nodal_forces()) {
-      const Vec2 f = loads_.nodal_force(n);
-      fx += f.x();
-      fy += f.y();
+    Vector<kDim> v, f, a;
+    for (int d = 0; d < kDim; ++d) {
+      v[d] = velocity_[kVectorStride * n + d];
+      f[d] = force_[kVectorStride * n + d];
     }
-    if (damping_ > 0.0) apply_cundall_damping(damping_, fx, fy, vx, vy);
-    // Below the small-mass cutoff only gravity accelerates the node (see small_mass_).
+    if (loads_.has_nodal_forces()) {
+      const Vec2 load = loads_.nodal_force(n);
+      for (int d = 0; d < kDim; ++d) f[d] += load[d];
+    }
+    if (damping_ > 0.0) apply_cundall_damping(damping_, f, v);
+    // Below the small-mass cutoff only the body force accelerates the node (see small_mass_).
     const bool small = m < small_mass_;
-    const double ax = small ? gx_ : fx / m, ay = small ? gy_ : fy / m;
+    for (int d = 0; d < kDim; ++d) a[d] = small ? body_force_now_[d] : f[d] / m;
     if (const std::int32_t c = constraint_of_[n]; c >= 0) {
-      const Vec2 v_old(momentum_[kVectorStride * n] / m, momentum_[kVectorStride * n + 1] / m);
-      const NodeConstraint now = constraint_now(c);
+      Vector<kDim> v_old;
+      for (int d = 0; d < kDim; ++d) v_old[d] = momentum_[kVectorStride * n + d] / m;
+      const NodeConstraint<kDim> now = constraint_now(c);
       NormalMemory& memory = normal_memory_[static_cast<std::size_t>(c)];
       if (now.friction_dir < 0) memory.forget();  // a contact the material does not touch
-      const ConstrainedVelocity r = constrained_velocity(v_old, Vec2(ax, ay), dt_, now, &memory, m);
-      u[0] = r.velocity[0];
-      u[1] = r.velocity[1];
-      u[2] = r.rate[0];
-      u[3] = r.rate[1];
+      const ConstrainedVelocity<kDim> r = constrained_velocity(v_old, a, dt_, now, &memory, m);
+      for (int d = 0; d < kDim; ++d) {
+        u[d] = r.velocity[d];
+        u[kDim + d] = r.rate[d];
+      }
     } else {
-      u[0] = vx + ax * dt_;
-      u[1] = vy + ay * dt_;
-      u[2] = ax;
-      u[3] = ay;
+      for (int d = 0; d < kDim; ++d) {
+        u[d] = v[d] + a[d] * dt_;
+        u[kDim + d] = a[d];
+      }
     }
   }
 }

@@ -172,7 +172,9 @@ class Engine {
   /// normal_memory_ from a resumed deck's friction_memory; InputError for a node without a lagged friction.
   void restore_friction_memory(const std::vector<FrictionMemoryRecord>& memory);
   void find_wall_contacts();  ///< touching_ from the particles at the start of the step (wall_contact.cpp)
-  NodeConstraint constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
+  NodeConstraint<kDim> constraint_now(std::int32_t c) const;  ///< constraints_[c], without its contact if not touching
+  std::array<int, kDim> node_axes(std::size_t node) const;  ///< the node's lattice index per axis (wall_contact.cpp)
+  std::size_t node_at(const std::array<int, kDim>& at) const;  ///< the node at lattice index `at` (axis 0 fastest)
   std::vector<std::uint32_t> live_by_id() const;  ///< the live particles' storage indices, by id
   /// Sort keys per cell: one per stencil quadrant (an octant in 3D).
   static constexpr int kKeysPerCell = 1 << kDim;
@@ -210,7 +212,7 @@ class Engine {
   std::vector<double> force_;     ///< kVectorStride per node (external + internal)
   /// kVectorStride per node: momentum / mass, constraints as the strain rate reads them.
   std::vector<double> velocity_;
-  std::vector<double> updated_;   ///< kUpdatedStride per node: updated velocity (x, y), acceleration (x, y)
+  std::vector<double> updated_;   ///< kUpdatedStride per node: updated velocity, then acceleration, per axis
   std::vector<double> nodal_remedy_;  ///< 3 per node: the values a nodal remedy smooths (stress_remedy.hpp)
   /// A chunk's band of the grid: the nodes [i0, i1) x [j0, j1) its particles' stencils reach, 5 values
   /// per node (m, px, py, fx, fy), row by row from `offset` in pool_; summed in chunk order by
@@ -245,19 +247,22 @@ class Engine {
   double small_mass_ = 0.0;
   double mass_tolerance_ = 1.0e-15;  ///< nodes with no more mass are empty (kMassTolerance, scaled for tiny densities)
   std::vector<std::int32_t> constraint_of_;       ///< per node: index into constraints_, -1: unconstrained
-  std::vector<NodeConstraint> constraints_;       ///< the constrained nodes' velocity and friction constraints
+  std::vector<NodeConstraint<kDim>> constraints_;      ///< the constrained nodes' velocity and friction constraints
   std::vector<NormalMemory> normal_memory_;       ///< per constraint: its lagged normal force (lagged_friction.hpp)
   bool lagged_friction_ = false;                  ///< some friction constraint has a normal_lag
-  /// A one-sided contact node (NodeConstraint::one_sided): its constraint index and the lattice index,
-  /// along the wall's normal, of the wall face it belongs to (the innermost node of its run of contact
-  /// nodes: nodes behind the face lie inside the rigid wall); wall_contact.cpp.
+  /// A one-sided contact node (NodeConstraint::one_sided): its constraint index, the lattice index, along
+  /// the wall's normal, of the wall face it belongs to (the innermost node of its run of contact nodes:
+  /// nodes behind the face lie inside the rigid wall), and the cells whose particles may touch the face
+  /// there: contact_cells_[cells_begin, cells_end) (wall_contact.cpp).
   struct WallContactNode {
-    std::size_t node, constraint;
+    std::size_t constraint;
     int face;
+    std::size_t cells_begin, cells_end;
   };
   /// The one-sided contacts, and per constraint whether the material touches the wall there this step
   /// (1 for every other constraint).
   std::vector<WallContactNode> contact_nodes_;
+  std::vector<std::int64_t> contact_cells_;  ///< the contact nodes' cells (lattice cell indices, as cell_of)
   std::vector<std::uint8_t> touching_;
 
   // particles
@@ -302,7 +307,7 @@ class Engine {
   double damping_ = 0.0;
   BodyForce body_force_;   ///< gravity and the shaken base's inertial force (body_force.hpp)
   ExternalLoads loads_;    ///< concentrated nodal forces and particle tractions (external_loads.hpp)
-  double gx_ = 0, gy_ = 0;  ///< body_force_ at the start of the current step
+  std::array<double, kDim> body_force_now_{};  ///< body_force_ at the start of the current step, per axis
   StressSmoothing smoothing_ = StressSmoothing::None;
   double dt_ = 0;
   long long step_index_ = 0;

@@ -23,7 +23,7 @@ void Engine::scatter_particle(std::size_t k, double* g, std::size_t row_stride, 
   if (forces) {
     const double V = forces_from_next ? nxt_.volume[k] : cur_.volume[p];
     const double* sp = forces_from_next ? &nxt_.stress[4 * k] : &cur_.stress[4 * p];
-    Double2 external{m * gx_, m * gy_};
+    Double2 external{m * body_force_now_[0], m * body_force_now_[1]};
     if (!cur_.traction_slot.empty()) {
       if (const std::int32_t slot = cur_.traction_slot[p]; slot >= 0) {
         const Vec2 t = loads_.traction_force(slot, V, m / materials_[cur_.material[p]].density);
@@ -161,7 +161,7 @@ void Engine::scatter_run(std::size_t k, double* g, std::size_t row_stride, bool 
       syy[l] = sp[1];
       sxy[l] = sp[3];
     }
-    scatter_forces4(band_row, row_stride, w, m * gx_, m * gy_, V, sxx, syy, sxy);
+    scatter_forces4(band_row, row_stride, w, m * body_force_now_[0], m * body_force_now_[1], V, sxx, syy, sxy);
   }
 }
 

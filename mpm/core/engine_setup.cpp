@@ -128,21 +128,22 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
 
   // Boundary conditions on nodes (CB-Geo: a later constraint on the same node and direction wins).
   constraint_of_.assign(nodes_, -1);
-  const auto constraint_at = [&](int n) -> NodeConstraint& {
+  const auto constraint_at = [&](int n) -> NodeConstraint<kDim>& {
     if (constraint_of_[n] < 0) {
       constraint_of_[n] = static_cast<std::int32_t>(constraints_.size());
       constraints_.emplace_back();
     }
     return constraints_[static_cast<std::size_t>(constraint_of_[n])];
   };
+  const std::string axes = kDim == 2 ? "0 or 1" : "0, 1 or 2";  // the axes a constraint's dir may name
   for (std::size_t i = 0; i < deck.velocity_constraints.size(); ++i) {
     const auto& c = deck.velocity_constraints[i];
     const std::string where = "velocity_constraints[" + std::to_string(i) + "]";
-    if (c.dir < 0 || c.dir > 1) throw common::InputError(where, "dir must be 0 or 1, got " + std::to_string(c.dir));
+    if (c.dir < 0 || c.dir >= kDim) throw common::InputError(where, "dir must be " + axes + ", got " + std::to_string(c.dir));
     for (int n : c.nodes) {
       if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
         throw common::InputError(where, "node " + std::to_string(n) + " is not in the mesh");
-      NodeConstraint& nc = constraint_at(n);
+      NodeConstraint<kDim>& nc = constraint_at(n);
       nc.fixed |= static_cast<std::uint8_t>(1u << c.dir);
       nc.fixed_velocity[c.dir] = c.velocity;
     }
@@ -150,11 +151,11 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   for (std::size_t i = 0; i < deck.friction_constraints.size(); ++i) {
     const auto& c = deck.friction_constraints[i];
     const std::string where = "friction_constraints[" + std::to_string(i) + "]";
-    if (c.dir < 0 || c.dir > 1) throw common::InputError(where, "dir must be 0 or 1, got " + std::to_string(c.dir));
+    if (c.dir < 0 || c.dir >= kDim) throw common::InputError(where, "dir must be " + axes + ", got " + std::to_string(c.dir));
     for (int n : c.nodes) {
       if (n < 0 || static_cast<std::size_t>(n) >= nodes_)
         throw common::InputError(where, "node " + std::to_string(n) + " is not in the mesh");
-      NodeConstraint& nc = constraint_at(n);
+      NodeConstraint<kDim>& nc = constraint_at(n);
       nc.friction_dir = c.dir;
       nc.sign_n = c.sign_n > 0 ? 1.0 : -1.0;
       nc.mu = c.friction;

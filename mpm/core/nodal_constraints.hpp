@@ -11,13 +11,19 @@
 
 namespace mpm::core {
 
-using Vec2 = Eigen::Vector2d;
+/// A nodal vector of the `dim`-dimensional engine: one component per axis.
+template <int dim>
+using Vector = Eigen::Matrix<double, dim, 1>;
+using Vec2 = Vector<2>;
 
-/// What constrains one node (from the deck's velocity_constraints and friction_constraints).
+/// What constrains one node of the `dim`-dimensional grid (from the deck's velocity_constraints and
+/// friction_constraints).
+template <int dim>
 struct NodeConstraint {
+  static_assert(dim >= 1 && dim <= 8, "fixed holds one bit per axis");
   std::uint8_t fixed = 0;  ///< bit d set: velocity component d is prescribed
-  Vec2 fixed_velocity = Vec2::Zero();
-  int friction_dir = -1;   ///< boundary normal axis (0 = x, 1 = y); -1: no friction
+  Vector<dim> fixed_velocity = Vector<dim>::Zero();
+  int friction_dir = -1;   ///< the wall's normal axis d < dim (0 = x, 1 = y, 2 = z); -1: no friction
   double sign_n = -1.0;    ///< outward normal sign along friction_dir (+1 / -1)
   double mu = 0.0;         ///< Coulomb coefficient
   NormalLag lag;           ///< the strength's lag behind the normal force (lagged_friction.hpp); default none
@@ -27,34 +33,40 @@ struct NodeConstraint {
 };
 
 /// The normal velocity of a frictional node's wall: the prescribed one, else 0 (a wall at rest).
-inline double wall_velocity(const NodeConstraint& c) {
+template <int dim>
+inline double wall_velocity(const NodeConstraint<dim>& c) {
   const int dn = c.friction_dir;
   return ((c.fixed >> dn) & 1u) ? c.fixed_velocity[dn] : 0.0;
 }
 
 /// The prescribed velocity components take their value.
-inline void apply_prescribed(Vec2& v, const NodeConstraint& c) {
-  for (int d = 0; d < 2; ++d)
+template <int dim>
+inline void apply_prescribed(Vector<dim>& v, const NodeConstraint<dim>& c) {
+  for (int d = 0; d < dim; ++d)
     if ((c.fixed >> d) & 1u) v[d] = c.fixed_velocity[d];
 }
 
 /// The constrained end-of-step nodal velocity and the velocity change it makes over the step.
+template <int dim>
 struct ConstrainedVelocity {
-  Vec2 velocity;  ///< v_new
-  Vec2 rate;      ///< (v_new - v_old) / dt: the FLIP increment rate handed to the particles
+  Vector<dim> velocity;  ///< v_new
+  Vector<dim> rate;      ///< (v_new - v_old) / dt: the FLIP increment rate handed to the particles
 };
 
 /// Grid update of a constrained node (Bardenhagen, Brackbill & Sulsky 2000, "The material-point method
 /// for granular materials", CMAME 187, 529-541, section 3, eqs. 19-25, the contact algorithm, with the
 /// wall as the rigid body). v_old = p / m is the node's velocity from the mapped momentum before any
 /// constraint, a = f / m its acceleration (after damping), v* = v_old + a dt the trial velocity.
-/// - Friction (friction_dir = d, outward sign s, coefficient mu): the wall pushes only when the node
-///   approaches it, w_n = s (v*_d - v_wall) > 0, with v_wall the prescribed normal velocity (0 when the
-///   normal is free: then the wall is a one-sided contact that stops the approach). The normal reaction
-///   over the step is the impulse that stops that approach, m w_n (a force m w_n / dt: the normal nodal
-///   momentum plus the normal force, so it cannot be inflated by a rectified force alone), and the
-///   Coulomb limit caps the tangential impulse at mu m w_n: the tangential velocity is reduced by
-///   min(|v*_t|, mu w_n), never reversed (stick when |v*_t| <= mu w_n).
+/// - Friction (friction_dir = d, any axis d < dim; outward sign s, coefficient mu): the wall pushes only
+///   when the node approaches it, w_n = s (v*_d - v_wall) > 0, with v_wall the prescribed normal velocity
+///   (0 when the normal is free: then the wall is a one-sided contact that stops the approach). The
+///   normal reaction over the step is the impulse that stops that approach, m w_n (a force m w_n / dt:
+///   the normal nodal momentum plus the normal force, so it cannot be inflated by a rectified force
+///   alone), and the Coulomb limit caps the tangential impulse at mu m w_n: the tangential velocity v*_t
+///   (v* without its component d: a vector over the other dim - 1 axes, a line in 2D, the wall's plane in
+///   3D) is reduced along its own direction by min(|v*_t|, mu w_n), never reversed (stick when
+///   |v*_t| <= mu w_n: the limit is on the magnitude of the tangential vector, as the paper's contact
+///   algorithm takes it in any dimension).
 /// - Prescribed components then take their value.
 /// A one-sided contact acts only where the material touches the wall (the engine's gap test,
 /// wall_contact.cpp); elsewhere the node is free.
@@ -66,16 +78,18 @@ struct ConstrainedVelocity {
 /// SerialMPM::setGridBoundaryConditions: "recompute acceleration as the difference between the velocity
 /// interpolated to the grid (no bcs applied) and the new velocity_star"). CB-Geo hands FLIP a = 0 in a
 /// constrained direction and mu |a_n| from the force alone (include/node.tcc); mpm/README.md.
-inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a, double dt, const NodeConstraint& c,
-                                               NormalMemory* memory = nullptr, double mass = 0.0) {
-  Vec2 v = v_old + dt * a;
+template <int dim>
+inline ConstrainedVelocity<dim> constrained_velocity(const Vector<dim>& v_old, const Vector<dim>& a, double dt,
+                                                    const NodeConstraint<dim>& c, NormalMemory* memory = nullptr,
+                                                    double mass = 0.0) {
+  Vector<dim> v = v_old + dt * a;
   if (c.friction_dir >= 0) {
     const int dn = c.friction_dir;
     const double v_wall = wall_velocity(c);
     const double approach = c.sign_n * (v[dn] - v_wall);
     const bool lagged = memory && c.lag.active();
     if (approach > 0.0 || lagged) {  // else a node leaving a wall without a lag: free
-      Vec2 vt = v;
+      Vector<dim> vt = v;  // v*_t: the tangential velocity, over every axis but dn
       vt[dn] = 0.0;
       const double slip = vt.norm();
       double limit = c.mu * approach;  // the tangential velocity change Coulomb allows
@@ -85,7 +99,7 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
       }
       if (approach > 0.0 || (lagged && ((c.fixed >> dn) & 1u))) {
         const double v_n = approach > 0.0 ? v_wall : v[dn];  // the approach is stopped
-        v = slip <= limit ? Vec2::Zero() : Vec2((1.0 - limit / slip) * vt);
+        v = slip <= limit ? Vector<dim>::Zero() : Vector<dim>((1.0 - limit / slip) * vt);
         v[dn] = v_n;
       }
     }
@@ -102,7 +116,8 @@ inline ConstrainedVelocity constrained_velocity(const Vec2& v_old, const Vec2& a
 /// rest on a slope hopped and crept down it: 0.125 m in 1 s, mpm/README.md "Friction and flutter"). USL reads
 /// the constrained end-of-step velocity itself. Friction is left to the grid update: it needs the normal
 /// impulse of the step.
-inline Vec2 strain_rate_velocity(Vec2 v, const NodeConstraint& c) {
+template <int dim>
+inline Vector<dim> strain_rate_velocity(Vector<dim> v, const NodeConstraint<dim>& c) {
   if (c.friction_dir >= 0) {
     const int dn = c.friction_dir;
     const double v_wall = wall_velocity(c);

@@ -1,8 +1,8 @@
 // The gap test of the one-sided frictional contact (NodeConstraint::one_sided): a wall node stops the
 // approach and carries friction only where the material touches the wall, i.e. where a particle's domain
 // reaches it: gap = s (x_wall - x_p) - l_p <= 0 along the wall's normal (s the outward sign, l_p the
-// particle's half-size), for a particle in one of the four cells that share the node (one that has passed
-// the wall has a negative gap). The wall is the face of the node's run of contact nodes along the normal
+// particle's half-size), for a particle in one of the cells that share the node (four in 2D, eight in 3D;
+// the normal along any axis; one that has passed the wall has a negative gap). The wall is the face of the node's run of contact nodes along the normal
 // (set_up_wall_contacts): a base given as several node rows is one rigid body whose face is the top row.
 //
 // Why: on a single velocity field the wall node also carries particles that have left the wall. Under FLIP
@@ -24,36 +24,76 @@ namespace mpm::core {
 /// touches it.
 constexpr double kContactGapTolerance = 1.0e-9;
 
-NodeConstraint Engine::constraint_now(std::int32_t c) const {
-  NodeConstraint nc = constraints_[static_cast<std::size_t>(c)];
+NodeConstraint<kDim> Engine::constraint_now(std::int32_t c) const {
+  NodeConstraint<kDim> nc = constraints_[static_cast<std::size_t>(c)];
   if (!touching_[static_cast<std::size_t>(c)]) nc.friction_dir = -1;  // a free node (its normal is free)
   return nc;
 }
 
+std::array<int, kDim> Engine::node_axes(std::size_t node) const {
+  std::array<int, kDim> at{};
+  for (int d = 0; d < kDim; ++d) {
+    const auto n = static_cast<std::size_t>(nodes_per_axis_[d]);
+    at[d] = static_cast<int>(node % n);
+    node /= n;
+  }
+  return at;
+}
+
+std::size_t Engine::node_at(const std::array<int, kDim>& at) const {
+  std::size_t node = static_cast<std::size_t>(at[kDim - 1]);
+  for (int d = kDim - 2; d >= 0; --d) node = node * static_cast<std::size_t>(nodes_per_axis_[d]) + static_cast<std::size_t>(at[d]);
+  return node;
+}
+
 void Engine::set_up_wall_contacts() {
   touching_.assign(constraints_.size(), 1);
-  const auto contact = [&](std::size_t node) -> const NodeConstraint* {
+  const auto contact = [&](std::size_t node) -> const NodeConstraint<kDim>* {
     const std::int32_t c = constraint_of_[node];
     if (c < 0 || !constraints_[static_cast<std::size_t>(c)].one_sided()) return nullptr;
     return &constraints_[static_cast<std::size_t>(c)];
   };
-  const auto row = node_row_stride();
+  // The cells that share a node along the wall: 2^(kDim - 1), the node's lower or upper neighbour on each
+  // tangential axis (bit b of `side` for the b-th axis other than the normal).
+  constexpr int kSides = 1 << (kDim - 1);
   for (std::size_t node = 0; node < nodes_; ++node) {
-    const NodeConstraint* nc = contact(node);
+    const NodeConstraint<kDim>* nc = contact(node);
     if (!nc) continue;
-    // Walk inwards (against the outward normal) while the next node is a contact of the same wall: a
-    // base given as several node rows (a grid that extends below it, GIMP's halo) has one face, the top row.
+    // Walk inwards (against the outward normal, along its axis dn) while the next node is a contact of the
+    // same wall: a base given as several node rows (a grid that extends below it, GIMP's halo) has one
+    // face, the top row.
     const int dn = nc->friction_dir, inward = nc->sign_n > 0 ? -1 : 1;
-    int at[2] = {static_cast<int>(node % row), static_cast<int>(node / row)};
+    const std::array<int, kDim> at = node_axes(node);
+    int face = at[dn];
     for (;;) {
-      int next[2] = {at[0], at[1]};
-      next[dn] += inward;
+      std::array<int, kDim> next = at;
+      next[dn] = face + inward;
       if (next[dn] < 0 || next[dn] >= nodes_per_axis_[dn]) break;
-      const NodeConstraint* o = contact(static_cast<std::size_t>(next[0]) + static_cast<std::size_t>(next[1]) * row);
+      const NodeConstraint<kDim>* o = contact(node_at(next));
       if (!o || o->friction_dir != dn || o->sign_n != nc->sign_n) break;
-      at[dn] = next[dn];
+      face = next[dn];
     }
-    contact_nodes_.push_back({node, static_cast<std::size_t>(constraint_of_[node]), at[dn]});
+    // The cells that share the node and those between it and the wall face (a node behind the face is
+    // inside the wall), in the grid: the particles that may touch the face there.
+    const std::size_t cells_begin = contact_cells_.size();
+    for (int across = std::min(at[dn], face) - 1; across <= std::max(at[dn], face); ++across) {
+      if (across < 0 || across >= cells_per_axis_[dn]) continue;
+      for (int side = 0; side < kSides; ++side) {
+        std::array<int, kDim> cell{};
+        cell[dn] = across;
+        bool inside = true;
+        for (int d = 0, bit = 0; d < kDim; ++d) {
+          if (d == dn) continue;
+          cell[d] = at[d] - 1 + ((side >> bit++) & 1);
+          inside = inside && cell[d] >= 0 && cell[d] < cells_per_axis_[d];
+        }
+        if (!inside) continue;
+        std::int64_t index = cell[kDim - 1];  // the lattice cell, axis 0 fastest (as cell_key)
+        for (int d = kDim - 2; d >= 0; --d) index = index * cells_per_axis_[d] + cell[d];
+        contact_cells_.push_back(index);
+      }
+    }
+    contact_nodes_.push_back({static_cast<std::size_t>(constraint_of_[node]), face, cells_begin, contact_cells_.size()});
   }
 }
 
@@ -61,35 +101,26 @@ void Engine::find_wall_contacts() {
   if (contact_nodes_.empty()) return;
   const auto cell_of_particle = [&](std::uint32_t p) { return cell_of(cur_.key[p]); };
   const auto& h = grid_.spacing;
-  for (const auto& [node, c, face] : contact_nodes_) {
-    const NodeConstraint& nc = constraints_[c];
-    const int dn = nc.friction_dir, dt = 1 - dn;
-    const int at[2] = {static_cast<int>(node % node_row_stride()), static_cast<int>(node / node_row_stride())};
-    const double wall = grid_.origin[dn] + face * h[dn];
-    // The cells that share the node and those between it and the wall face (a node behind the face is
-    // inside the wall): a particle on the inner side whose domain reaches the face, or one that has passed
-    // it (gap < 0), touches it.
+  for (const WallContactNode& w : contact_nodes_) {
+    const NodeConstraint<kDim>& nc = constraints_[w.constraint];
+    const int dn = nc.friction_dir;
+    const double wall = grid_.origin[dn] + w.face * h[dn];
+    // A particle of the node's cells on the inner side whose domain reaches the face, or one that has
+    // passed it (gap < 0), touches it.
     bool touching = false;
-    for (int across = std::min(at[dn], face) - 1; across <= std::max(at[dn], face) && !touching; ++across) {
-      for (int side = at[dt] - 1; side <= at[dt] && !touching; ++side) {
-        if (across < 0 || across >= cells_per_axis_[dn] || side < 0 || side >= cells_per_axis_[dt]) continue;
-        int cell[2];
-        cell[dn] = across;
-        cell[dt] = side;
-        const std::int64_t index =
-            static_cast<std::int64_t>(cell[0]) + static_cast<std::int64_t>(cell[1]) * cells_per_axis_[0];
-        // order_ is sorted by key, i.e. by cell first: the cell's particles are one run of it.
-        const auto first = std::lower_bound(order_.begin(), order_.end(), index,
-                                            [&](std::uint32_t p, std::int64_t k) { return cell_of_particle(p) < k; });
-        for (auto it = first; it != order_.end() && cell_of_particle(*it) == index && !touching; ++it) {
-          const std::uint32_t p = *it;
-          const double x = cur_.position[dn][p];
-          const double half = cur_.half_size[dn][p] * h[dn];
-          touching = nc.sign_n * (wall - x) - half <= kContactGapTolerance * h[dn];
-        }
+    for (std::size_t k = w.cells_begin; k < w.cells_end && !touching; ++k) {
+      const std::int64_t index = contact_cells_[k];
+      // order_ is sorted by key, i.e. by cell first: the cell's particles are one run of it.
+      const auto first = std::lower_bound(order_.begin(), order_.end(), index,
+                                          [&](std::uint32_t p, std::int64_t key) { return cell_of_particle(p) < key; });
+      for (auto it = first; it != order_.end() && cell_of_particle(*it) == index && !touching; ++it) {
+        const std::uint32_t p = *it;
+        const double x = cur_.position[dn][p];
+        const double half = cur_.half_size[dn][p] * h[dn];
+        touching = nc.sign_n * (wall - x) - half <= kContactGapTolerance * h[dn];
       }
     }
-    touching_[c] = touching ? 1 : 0;
+    touching_[w.constraint] = touching ? 1 : 0;
   }
 }
 

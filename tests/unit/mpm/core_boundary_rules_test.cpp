@@ -12,9 +12,10 @@ namespace {
 
 using mpm::core::apply_cundall_damping;
 using mpm::core::constrained_velocity;
-using mpm::core::NodeConstraint;
 using mpm::core::strain_rate_velocity;
 using mpm::core::Vec2;
+using NodeConstraint = mpm::core::NodeConstraint<2>;
+using Vec3 = mpm::core::Vector<3>;
 
 /// A base node (friction normal -y, dir 1) with a fixed zero normal velocity.
 NodeConstraint base(double mu) {
@@ -131,14 +132,97 @@ TEST(LaggedFriction, BilateralWallRubsWhileItsStrengthLasts) {
 }
 
 TEST(CundallDamping, ReducesForceAgainstVelocity) {
-  double fx = 3.0, fy = -4.0;  // |f| = 5
-  apply_cundall_damping(0.1, fx, fy, 1.0, -2.0);
-  EXPECT_CLOSE(fx, 3.0 - 0.5, 1e-15, 0);
-  EXPECT_CLOSE(fy, -4.0 + 0.5, 1e-15, 0);
-  double gx = 3.0, gy = -4.0;
-  apply_cundall_damping(0.1, gx, gy, 0.0, 0.0);  // at rest: no damping force
-  EXPECT_EQ(gx, 3.0);
-  EXPECT_EQ(gy, -4.0);
+  Vec2 f(3.0, -4.0);  // |f| = 5
+  apply_cundall_damping(0.1, f, Vec2(1.0, -2.0));
+  EXPECT_CLOSE(f[0], 3.0 - 0.5, 1e-15, 0);
+  EXPECT_CLOSE(f[1], -4.0 + 0.5, 1e-15, 0);
+  Vec2 g(3.0, -4.0);
+  apply_cundall_damping(0.1, g, Vec2(0.0, 0.0));  // at rest: no damping force
+  EXPECT_EQ(g[0], 3.0);
+  EXPECT_EQ(g[1], -4.0);
+}
+
+TEST(CundallDamping, InThreeDimensionsTakesTheNormOfTheWholeForce) {
+  Vec3 f(2.0, 3.0, -6.0);  // |f| = 7
+  apply_cundall_damping(0.1, f, Vec3(-1.0, 0.0, 5.0));
+  EXPECT_CLOSE(f[0], 2.0 + 0.7, 1e-15, 0);
+  EXPECT_EQ(f[1], 3.0);  // no velocity along y: no damping there
+  EXPECT_CLOSE(f[2], -6.0 - 0.7, 1e-15, 0);
+}
+
+// --- The constraints in 3D: a normal along any axis, the tangential velocity a vector in the wall's plane
+// (Bardenhagen, Brackbill & Sulsky 2000: the Coulomb limit on the magnitude of the tangential velocity) ---
+
+const Vec3 kNoAcceleration(0.0, 0.0, 0.0);
+
+/// A one-sided floor of the 3D grid: outward normal -y (dir 1), free normal.
+mpm::core::NodeConstraint<3> floor_3d(double mu) {
+  mpm::core::NodeConstraint<3> c;
+  c.friction_dir = 1;
+  c.sign_n = -1.0;
+  c.mu = mu;
+  return c;
+}
+
+TEST(NodalConstraints3D, KineticFrictionReducesTheTangentialVectorAlongItself) {
+  // v* = (3, -1, 4): the floor stops 1 m/s of approach; the slip (3, 0, 4) has |v_t| = 5 and loses
+  // mu * 1 = 0.5 m/s of its magnitude, keeping its direction: (1 - 0.5 / 5) (3, 0, 4).
+  const auto r = constrained_velocity(Vec3(3.0, -1.0, 4.0), kNoAcceleration, 0.01, floor_3d(0.5));
+  EXPECT_EQ(r.velocity[1], 0.0);
+  EXPECT_CLOSE(r.velocity[0], 2.7, 1e-15, 0);
+  EXPECT_CLOSE(r.velocity[2], 3.6, 1e-15, 0);
+  EXPECT_CLOSE(r.rate[0], (2.7 - 3.0) / 0.01, 1e-12, 0);
+  EXPECT_CLOSE(r.rate[1], 1.0 / 0.01, 1e-12, 0);  // the approach removed from the particles too
+  EXPECT_CLOSE(r.rate[2], (3.6 - 4.0) / 0.01, 1e-12, 0);
+  // Per component the limit would have taken 0.5 from each, turning the slip: the magnitude is what counts.
+  EXPECT_CLOSE(r.velocity[2] / r.velocity[0], 4.0 / 3.0, 1e-15, 0);
+}
+
+TEST(NodalConstraints3D, SticksWhenTheSlipMagnitudeIsWithinTheLimit) {
+  // |v_t| = 5 <= mu w_n = 5 * 1: the Coulomb cone holds the node.
+  const auto r = constrained_velocity(Vec3(3.0, -1.0, 4.0), kNoAcceleration, 0.01, floor_3d(5.0));
+  EXPECT_EQ(r.velocity, Vec3::Zero());
+  // Just above the limit it slides: mu w_n = 4.9 < 5.
+  const auto s = constrained_velocity(Vec3(3.0, -1.0, 4.0), kNoAcceleration, 0.01, floor_3d(4.9));
+  EXPECT_CLOSE(s.velocity.norm(), 0.1, 1e-12, 0);
+  // Leaving the floor: free, with its whole tangential velocity.
+  const auto off = constrained_velocity(Vec3(3.0, 1.0, 4.0), kNoAcceleration, 0.01, floor_3d(5.0));
+  EXPECT_EQ(off.velocity, Vec3(3.0, 1.0, 4.0));
+}
+
+TEST(NodalConstraints3D, WallWithNormalAlongZAndAPrescribedNormalVelocity) {
+  // A lid with outward normal +z moving at 0.2 m/s (bilateral: the normal is prescribed); v* = (0, -0.6, 1):
+  // the approach w_n = 1 - 0.2 = 0.8 is stopped, friction mu 0.25 takes 0.2 m/s of the slip along -y.
+  mpm::core::NodeConstraint<3> c;
+  c.fixed = 4u;
+  c.fixed_velocity = Vec3(0.0, 0.0, 0.2);
+  c.friction_dir = 2;
+  c.sign_n = 1.0;
+  c.mu = 0.25;
+  const auto r = constrained_velocity(Vec3(0.0, -0.5, 1.0), Vec3(0.0, -10.0, 0.0), 0.01, c);
+  EXPECT_EQ(r.velocity[2], 0.2);
+  EXPECT_EQ(r.velocity[0], 0.0);
+  EXPECT_CLOSE(r.velocity[1], -0.6 + 0.2, 1e-15, 0);
+  // The strain rate sees no approach into it, and the tangential velocity untouched.
+  const Vec3 seen = strain_rate_velocity(Vec3(0.3, -0.5, 1.0), c);
+  EXPECT_EQ(seen, Vec3(0.3, -0.5, 0.2));
+}
+
+TEST(NodalConstraints3D, LaggedStrengthActsOnTheSlipMagnitude) {
+  // A lagged floor: the slip speed in the lag is |v*_t| = 5, and the strength mu N_s dt / m caps the
+  // magnitude of the tangential change.
+  mpm::core::NodeConstraint<3> c = floor_3d(0.5);
+  c.lag = mpm::core::NormalLag{0.1, 0.0};
+  mpm::core::NormalMemory memory;
+  memory.force = 40.0;  // N_s (N) of a node of 1 kg
+  memory.mass = 1.0;
+  const auto r = constrained_velocity(Vec3(3.0, -1.0, 4.0), kNoAcceleration, 0.01, c, &memory, 1.0);
+  const double keep = 1.0 / (1.0 + 0.01 * 5.0 / 0.1);  // r = dt |V| / L
+  const double Ns = keep * 40.0 + (1.0 - keep) * 1.0 * 1.0 / 0.01;  // N = m w_n / dt = 100 N
+  const double limit = 0.5 * Ns * 0.01 / 1.0;
+  EXPECT_CLOSE(memory.force, Ns, 1e-12, 0);
+  EXPECT_CLOSE(r.velocity.norm(), 5.0 - limit, 1e-12, 0);
+  EXPECT_CLOSE(r.velocity[2] / r.velocity[0], 4.0 / 3.0, 1e-15, 0);
 }
 
 }  // namespace
