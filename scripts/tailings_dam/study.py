@@ -22,6 +22,9 @@ a particle in the --duration after T (scripts/hybrid_run.py's definition); lique
 r_u >= 0.7 below the ground surface at T. --quick: T = 4 and 12 only (liquefied to 17 m and to the pond's base)
 and no other cells; `--quick --duration 40` (four 40 s runs, ~6 min on 2 cores) shows the authors' trends
 near rest, which 10 s of early flow hides (README, "A tailings dam through the chain").
+--cells-at T: only the MPM cell's effect, at the transfer time T: 2, 1 and 0.5 m cells with 2 x 2 particles per
+cell (cells.csv, cells.md); `--cells-at 4 --duration 40` compares runouts at rest (T = 4 s: the flow stops
+within 40 s), where a runout at a fixed time while the front still moves carries the front's speed.
 """
 import argparse
 import csv
@@ -59,6 +62,32 @@ def run_case(bins, fem_dir, out, name, t, options, duration=10.0):
             "liquefied_depth": depth, "max_speed": rows[-1]["max_speed"], "wall_s": wall}
 
 
+def cell_study(bins, fem_dir, out, t, duration, jobs):
+    """--cells-at T: the runout on 2, 1 and 0.5 m cells (2 x 2 particles per cell) after a transfer at T, and
+    how much each halving changes it; cells.csv and cells.md in out."""
+    cells = (("2", "4"), ("1", "8"), ("0.5", "16"))
+    cases = [("cells_T%g_%sm" % (t, h), t, ["--ppd", ppd, "--cell-size", h, "--residual-ratio", "0.06"]) for h, ppd in cells]
+    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        rows = list(pool.map(lambda c: run_case(bins, fem_dir, out, *c, duration=duration), cases[::-1]))[::-1]
+    columns = ("case", "transfer", "runout", "moved_mass_fraction", "liquefied_depth", "max_speed", "wall_s")
+    with open(os.path.join(out, "cells.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns)
+        w.writeheader()
+        w.writerows(rows)
+    lines = ["# The MPM cell, transfer at %g s, %g s of MPM" % (t, duration), "",
+             "| cell (m) | runout (m) | moving mass | largest speed at the end (m/s) | wall (s) |", "|---|---|---|---|---|"]
+    lines += ["| %s | %.3g | %.1f %% | %.2f | %.0f |" % (h, r["runout"], 100 * r["moved_mass_fraction"], r["max_speed"], r["wall_s"])
+              for (h, _), r in zip(cells, rows)]
+    lines.append("")
+    for (h, _), coarse, fine in zip(cells, rows, rows[1:]):
+        lines.append("- halving the cell from %s m changes the runout by %+.1f %%"
+                     % (h, 100 * (fine["runout"] - coarse["runout"]) / coarse["runout"]))
+    with open(os.path.join(out, "cells.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default=os.path.join(REPO, "results", "tailings_dam_study"))
@@ -68,9 +97,14 @@ def main():
     ap.add_argument("--bin", default=None)
     ap.add_argument("--duration", type=float, default=10.0, help="seconds of MPM after each transfer")
     ap.add_argument("--finest", action="store_true", help="also 0.25 m cells with 2 x 2 particles per cell")
+    ap.add_argument("--cells-at", type=float, default=None, metavar="T",
+                    help="only the MPM cell cases (2, 1, 0.5 m; 2 x 2 particles per cell) at transfer time T")
     a = ap.parse_args()
     if not a.duration > 0:
         print("%s: error: --duration: expected a number of seconds > 0, got %g" % (PROG, a.duration), file=sys.stderr)
+        return 2
+    if a.cells_at is not None and not a.cells_at >= 0:
+        print("%s: error: --cells-at: expected a transfer time >= 0, got %g" % (PROG, a.cells_at), file=sys.stderr)
         return 2
     out = os.path.abspath(a.out)
     os.makedirs(out, exist_ok=True)
@@ -80,6 +114,8 @@ def main():
         if not a.fem:
             print("%s: FEM: fem_tcl %s %s" % (PROG, MODEL, fem_dir), flush=True)
             pipeline.run_fem_script(bins, MODEL, fem_dir)
+        if a.cells_at is not None:
+            return cell_study(bins, fem_dir, out, a.cells_at, a.duration, a.jobs)
         window = (4.0, 12.0) if a.quick else (4.0, 6.0, 8.0, 10.0, 12.0)
         base = ["--ppd", "8", "--cell-size", "1"]
         cases = [("T%g" % t, t, base + ["--residual-ratio", "0.06"]) for t in window]
