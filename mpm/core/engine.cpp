@@ -106,8 +106,28 @@ void Engine::for_each_chunk(F&& f) {
 
 template <class F>
 void Engine::for_each_row(F&& f) {
+  // The node rows of the active box (row_axes), the outermost axis slowest.
+  if constexpr (kDim == 2) {
+    // The rows j, written out for 2D: the loop over the outer axes below cost 1.1 M instructions more in
+    // 20 steps of the profile (mpm_core_benchmark --profile usf flip 20 1; the flattened step's register
+    // allocation: spills in the stress update and the stencil runs).
 #pragma omp for schedule(static) nowait
-  for (int j = bj0_; j < bj1_; ++j) f(j);
+    for (int j = box_lo_[1]; j < box_hi_[1]; ++j) f(j);
+  } else {
+    int rows = 1;
+    for (int d = 1; d < kDim; ++d) rows *= box_hi_[d] - box_lo_[d];
+#pragma omp for schedule(static) nowait
+    for (int q = 0; q < rows; ++q) {
+      int row = 0, stride = 1, rest = q;
+      for (int d = 1; d < kDim - 1; ++d) {
+        const int extent = box_hi_[d] - box_lo_[d];
+        row += (box_lo_[d] + rest % extent) * stride;
+        rest /= extent;
+        stride *= nodes_per_axis_[d];
+      }
+      f(row + (box_lo_[kDim - 1] + rest) * stride);
+    }
+  }
 }
 
 /// Waits for every thread of the step's parallel region (called from inside it).
@@ -190,43 +210,56 @@ void Engine::p2g_chunk(std::size_t c, GridFields fields) {
 
 // scatter_particle, evaluate_shape_functions, evaluate_run and scatter_run: engine_p2g.inl (end of file).
 
-/// Sums the chunks' bands over row j of the active box into `sums` (`values` per node, 5 apart, from
-/// node bi0_), each node in chunk order: the same sums for any thread count. A band that does not reach
-/// a node adds nothing to it, so skipping it changes no bit (a sum that starts at +0 never becomes -0).
+/// Sums the chunks' bands over node row j of the active box (row_axes) into `sums` (`values` per node,
+/// kBandValues apart, from node box_lo_[0]), each node in chunk order: the same sums for any thread count.
+/// A band that does not reach a node adds nothing to it, so skipping it changes no bit (a sum that starts
+/// at +0 never becomes -0).
 void Engine::sum_bands_of_row(int j, int values, double* sums) const {
-  std::fill_n(sums, 5 * static_cast<std::size_t>(bi1_ - bi0_), 0.0);
-  for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(j)]; c < chunks_; ++c) {
+  constexpr int outer = kDim - 1;  // the outermost axis, along which the chunks' bands ascend
+  const std::array<int, kDim> at = row_axes(j);
+  std::fill_n(sums, kBandValues * static_cast<std::size_t>(box_hi_[0] - box_lo_[0]), 0.0);
+  for (std::size_t c = row_first_chunk_[static_cast<std::size_t>(at[outer])]; c < chunks_; ++c) {
     const Band& band = bands_[c];
-    if (band.size() == 0 || j >= band.j1) continue;
-    if (band.j0 > j) break;  // bands are ordered by row
-    const double* row = pool_.data() + band.offset + static_cast<std::size_t>(j - band.j0) * band.row_stride();
-    double* s = sums + 5 * static_cast<std::size_t>(band.i0 - bi0_);
-    for (int i = band.i0; i < band.i1; ++i, row += 5, s += 5)
+    if (band.size() == 0 || at[outer] >= band.hi[outer]) continue;
+    if (band.lo[outer] > at[outer]) break;  // bands are ordered along the outermost axis
+    bool reaches = true;  // the axes between (3D: the row's j)
+    for (int d = 1; d < outer; ++d) reaches = reaches && band.lo[d] <= at[d] && at[d] < band.hi[d];
+    if (!reaches) continue;
+    const double* row = pool_.data() + band.offset + band.row_of(at) * band.row_stride();
+    double* s = sums + kBandValues * static_cast<std::size_t>(band.lo[0] - box_lo_[0]);
+    for (int i = band.lo[0]; i < band.hi[0]; ++i, row += kBandValues, s += kBandValues)
       for (int f = 0; f < values; ++f) s[f] += row[f];
   }
 }
 
 /// The calling thread's scratch row for sum_bands_of_row.
 double* Engine::thread_row_sums() {
-  return &row_sums_[5 * node_row_stride() * static_cast<std::size_t>(omp_get_thread_num())];
+  return &row_sums_[kBandValues * node_row_stride() * static_cast<std::size_t>(omp_get_thread_num())];
 }
 
 /// The grid fields of row j from the chunks' bands (sum_bands_of_row).
 void Engine::reduce_row(int j, GridFields summed) {
   double* s = thread_row_sums();
-  sum_bands_of_row(j, 5, s);
-  for (int i = bi0_; i < bi1_; ++i, s += 5) {
+  sum_bands_of_row(j, kBandValues, s);
+  for (int i = box_lo_[0]; i < box_hi_[0]; ++i, s += kBandValues) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     if (summed.mass) mass_[n] = s[0];
     // Written out for 2D: a loop over the axes here took 0.15 M instructions more in 20 steps of the
     // profile (mpm_core_benchmark --profile usf flip 20 1).
-    if (summed.momentum) {
-      momentum_[kVectorStride * n] = s[1];
-      momentum_[kVectorStride * n + 1] = s[2];
-    }
-    if (summed.forces) {
-      force_[kVectorStride * n] = s[3];
-      force_[kVectorStride * n + 1] = s[4];
+    if constexpr (kDim == 2) {
+      if (summed.momentum) {
+        momentum_[kVectorStride * n] = s[1];
+        momentum_[kVectorStride * n + 1] = s[2];
+      }
+      if (summed.forces) {
+        force_[kVectorStride * n] = s[3];
+        force_[kVectorStride * n + 1] = s[4];
+      }
+    } else {
+      for (int d = 0; d < kDim; ++d) {
+        if (summed.momentum) momentum_[kVectorStride * n + d] = s[1 + d];
+        if (summed.forces) force_[kVectorStride * n + d] = s[1 + kDim + d];
+      }
     }
   }
 }
@@ -234,7 +267,7 @@ void Engine::reduce_row(int j, GridFields summed) {
 /// Nodal velocity = momentum / mass, then the velocity constraints (CB-Geo Node::compute_velocity) and no
 /// approach into a wall (strain_rate_velocity, nodal_constraints.hpp).
 void Engine::nodal_velocity_row(int j) {
-  for (int i = bi0_; i < bi1_; ++i) {
+  for (int i = box_lo_[0]; i < box_hi_[0]; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     Vector<kDim> v = Vector<kDim>::Zero();
     if (mass_[n] > mass_tolerance_)
@@ -251,7 +284,7 @@ void Engine::nodal_velocity_row(int j) {
 /// constraints in momentum form (nodal_constraints.hpp), and the rate (v_new - v_old) / dt handed to FLIP
 /// in place of a. updated_ holds v_new, then a, kDim values each.
 void Engine::integrate_row(int j) {
-  for (int i = bi0_; i < bi1_; ++i) {
+  for (int i = box_lo_[0]; i < box_hi_[0]; ++i) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     double* u = &updated_[kUpdatedStride * n];
     const double m = mass_[n];

@@ -203,7 +203,19 @@ class Engine {
   double gimp_margin_ = 0;  ///< 1 for uGIMP (a particle may leave the region by its half-size lp), 0 for linear
   bool keys_fit_int32_ = false;  ///< every cell_key fits 32 bits (cell_keys computes in them)
   std::size_t nodes_ = 0;
-  int bi0_ = 0, bi1_ = 0, bj0_ = 0, bj1_ = 0;  ///< active node box [bi0, bi1) x [bj0, bj1)
+  /// The active node box: nodes [box_lo_[d], box_hi_[d]) on each axis d (the union of the chunks' bands).
+  std::array<int, kDim> box_lo_{}, box_hi_{};
+  /// A node row: the nodes along axis 0 at one index on each outer axis d = 1 .. kDim - 1, numbered as its
+  /// first node's index / node_row_stride() (j in 2D, j + ny k in 3D). Its index on each outer axis:
+  std::array<int, kDim> row_axes(int row) const {
+    std::array<int, kDim> at{};
+    for (int d = 1; d < kDim - 1; ++d) {
+      at[d] = row % nodes_per_axis_[d];
+      row /= nodes_per_axis_[d];
+    }
+    at[kDim - 1] = row;
+    return at;
+  }
   std::vector<double> mass_;      ///< nodal mass
   /// Values per node: one per axis in the nodal vectors momentum_, force_ and velocity_; the updated
   /// velocity, then the acceleration, in updated_.
@@ -214,20 +226,38 @@ class Engine {
   std::vector<double> velocity_;
   std::vector<double> updated_;   ///< kUpdatedStride per node: updated velocity, then acceleration, per axis
   std::vector<double> nodal_remedy_;  ///< 3 per node: the values a nodal remedy smooths (stress_remedy.hpp)
-  /// A chunk's band of the grid: the nodes [i0, i1) x [j0, j1) its particles' stencils reach, 5 values
-  /// per node (m, px, py, fx, fy), row by row from `offset` in pool_; summed in chunk order by
-  /// reduce_row. Bounded in both directions, so a band holds about as many nodes as the chunk's cells
-  /// touch, however wide the active box (a long, thin runout).
+  /// Values per node of a band: the mass, then the momentum and the force per axis (m, px, py, fx, fy in
+  /// 2D: the layout of stencil_kernels.hpp).
+  static constexpr std::size_t kBandValues = 1 + 2 * kDim;
+  static_assert(kDim != 2 || kBandValues == 5, "stencil_kernels.hpp reads 5 values per node in 2D");
+  /// A chunk's band of the grid: the nodes [lo[d], hi[d]) on each axis d that its particles' stencils
+  /// reach, kBandValues per node, row by row (axis 0 fastest, then the outer axes as node rows are
+  /// numbered) from `offset` in pool_; summed in chunk order by reduce_row. Bounded on every axis, so a
+  /// band holds about as many nodes as the chunk's cells touch, however wide the active box (a long,
+  /// thin runout).
   struct Band {
-    int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+    std::array<int, kDim> lo{}, hi{};
     std::size_t offset = 0;
-    std::size_t row_stride() const { return 5 * static_cast<std::size_t>(i1 - i0); }
-    std::size_t size() const { return row_stride() * static_cast<std::size_t>(j1 - j0); }
+    std::size_t row_stride() const { return kBandValues * static_cast<std::size_t>(hi[0] - lo[0]); }
+    std::size_t size() const {
+      std::size_t s = row_stride();
+      for (int d = 1; d < kDim; ++d) s *= static_cast<std::size_t>(hi[d] - lo[d]);
+      return s;
+    }
+    /// The band's row at outer indices `at` (d >= 1, inside the band), counted from its first row.
+    std::size_t row_of(const std::array<int, kDim>& at) const {
+      std::size_t r = static_cast<std::size_t>(at[kDim - 1] - lo[kDim - 1]);
+      for (int d = kDim - 2; d >= 1; --d)
+        r = r * static_cast<std::size_t>(hi[d] - lo[d]) + static_cast<std::size_t>(at[d] - lo[d]);
+      return r;
+    }
   };
   std::vector<Band> bands_;
   std::vector<double> pool_;
-  std::vector<std::size_t> row_first_chunk_;  ///< per node row: the first chunk whose band reaches it
-  std::vector<double> row_sums_;              ///< per thread: 5 values per node of one row (reduce_row)
+  /// Per index on the outermost axis (a node row in 2D, a plane of rows in 3D): the first chunk whose band
+  /// reaches it (chunks follow the sort key, whose cell index has the outermost axis slowest).
+  std::vector<std::size_t> row_first_chunk_;
+  std::vector<double> row_sums_;              ///< per thread: kBandValues per node of one row (reduce_row)
   /// Small-mass cutoff of USL and of APIC on bilinear cells (kg per unit thickness; otherwise 0): a node with less mass than 2 % of a full node of the
   /// lightest material (0.02 rho_min hx hy) is accelerated by gravity alone: its internal force
   /// -sum V grad N . sigma is dropped (the body force per unit mass is g at every node). Why: at a node of mass fraction xi = m / (rho h^2) that only a particle's edge touches,

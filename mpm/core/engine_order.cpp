@@ -89,40 +89,41 @@ void Engine::cut_chunks() {
   const auto chunks = static_cast<std::ptrdiff_t>(chunks_);
 #pragma omp parallel for num_threads(threads_) schedule(static)
   for (std::ptrdiff_t c = 0; c < chunks; ++c) {
-    int imin = cells_per_axis_[0], imax = -1, jmin = cells_per_axis_[1], jmax = -1;
+    std::array<int, kDim> lo = cells_per_axis_, hi;  // the chunk's cells per axis
+    hi.fill(-1);
     std::int64_t previous_cell = kRemoved;  // a cell's particles are consecutive: one division per cell
     for (std::size_t k = chunk_[c]; k < chunk_[c + 1]; ++k) {
-      const std::int64_t cell = cell_of(cur_.key[order_[k]]);
+      std::int64_t cell = cell_of(cur_.key[order_[k]]);
       if (cell == previous_cell) continue;
       previous_cell = cell;
-      const int i = static_cast<int>(cell % cells_per_axis_[0]), j = static_cast<int>(cell / cells_per_axis_[0]);
-      imin = std::min(imin, i);
-      imax = std::max(imax, i);
-      jmin = std::min(jmin, j);
-      jmax = std::max(jmax, j);
+      for (int d = 0; d < kDim; ++d) {  // the cell's index per axis, axis 0 fastest
+        const int at = static_cast<int>(d < kDim - 1 ? cell % cells_per_axis_[d] : cell);
+        if (d < kDim - 1) cell /= cells_per_axis_[d];
+        lo[d] = std::min(lo[d], at);
+        hi[d] = std::max(hi[d], at);
+      }
     }
     Band& b = bands_[static_cast<std::size_t>(c)];
-    if (imax < 0) {  // an empty chunk (its cell's particles all went to the chunk before)
+    if (hi[0] < 0) {  // an empty chunk (its cell's particles all went to the chunk before)
       b = Band{};
       continue;
     }
-    b.i0 = std::max(imin - 1, 0);
-    b.i1 = std::min(imax + 3, nodes_per_axis_[0]);
-    b.j0 = std::max(jmin - 1, 0);
-    b.j1 = std::min(jmax + 3, nodes_per_axis_[1]);
+    for (int d = 0; d < kDim; ++d) {
+      b.lo[d] = std::max(lo[d] - 1, 0);
+      b.hi[d] = std::min(hi[d] + 3, nodes_per_axis_[d]);
+    }
   }
   // The active node box: the union of the bands.
-  bi0_ = bj0_ = 0;
-  bi1_ = bj1_ = 0;
+  box_lo_.fill(0);
+  box_hi_.fill(0);
   if (chunks_ > 0) {
-    bi0_ = nodes_per_axis_[0];
-    bj0_ = nodes_per_axis_[1];
+    box_lo_ = nodes_per_axis_;
     for (std::size_t c = 0; c < chunks_; ++c) {
       if (bands_[c].size() == 0) continue;
-      bi0_ = std::min(bi0_, bands_[c].i0);
-      bi1_ = std::max(bi1_, bands_[c].i1);
-      bj0_ = std::min(bj0_, bands_[c].j0);
-      bj1_ = std::max(bj1_, bands_[c].j1);
+      for (int d = 0; d < kDim; ++d) {
+        box_lo_[d] = std::min(box_lo_[d], bands_[c].lo[d]);
+        box_hi_[d] = std::max(box_hi_[d], bands_[c].hi[d]);
+      }
     }
   }
   std::size_t offset = 0;
@@ -131,10 +132,12 @@ void Engine::cut_chunks() {
     offset += bands_[c].size();
   }
   if (pool_.size() < offset) pool_.resize(offset);  // grows rarely; no allocation in a steady state
-  // Chunks follow the rows: their bands' last rows ascend (an empty band has none).
+  // Chunks follow the outermost axis (the rows in 2D): their bands' last index on it ascends (an empty
+  // band has none).
+  constexpr int outer = kDim - 1;
   std::size_t first = 0;
-  for (int j = bj0_; j < bj1_; ++j) {
-    while (first < chunks_ && bands_[first].j1 <= j) ++first;
+  for (int j = box_lo_[outer]; j < box_hi_[outer]; ++j) {
+    while (first < chunks_ && bands_[first].hi[outer] <= j) ++first;
     row_first_chunk_[static_cast<std::size_t>(j)] = first;
   }
 }

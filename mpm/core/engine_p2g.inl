@@ -124,7 +124,8 @@ void Engine::set_stencil(std::size_t c, std::size_t k, int bi, int bj, std::int3
   run_lane_[k] = lane;
   base_[k] = bi + bj * nodes_per_axis_[0];
   const Band& band = bands_[c];
-  local_[k] = static_cast<std::int32_t>(5 * ((bj - band.j0) * (band.i1 - band.i0) + (bi - band.i0)));
+  constexpr int values = static_cast<int>(kBandValues);  // int arithmetic, as local_
+  local_[k] = static_cast<std::int32_t>(values * ((bj - band.lo[1]) * (band.hi[0] - band.lo[0]) + (bi - band.lo[0])));
 }
 
 /// p2g of the four particles of a stencil run from k (APIC: the momentum with the particles' matrices),

@@ -264,8 +264,8 @@ Engine::Engine(const Deck& deck, int threads, ExecutionOptions options) : grid_(
   const std::size_t max_chunks = n / kChunkParticles + 2;
   chunk_.resize(max_chunks + 1);
   bands_.resize(max_chunks);
-  row_sums_.resize(static_cast<std::size_t>(threads_) * 5 * node_row_stride());
-  row_first_chunk_.resize(static_cast<std::size_t>(nodes_per_axis_[1]));
+  row_sums_.resize(static_cast<std::size_t>(threads_) * kBandValues * node_row_stride());
+  row_first_chunk_.resize(static_cast<std::size_t>(nodes_per_axis_[kDim - 1]));
   local_.resize(n);
   mass_.assign(nodes_, 0.0);
   momentum_.assign(kVectorStride * nodes_, 0.0);

@@ -128,7 +128,7 @@ void Engine::scatter_remedy_values(std::size_t c) {
     double* band_row = g + local_[k];
     for (int b = 0; b < W; ++b, band_row += row_stride) {
       double* gn = band_row;
-      for (int a = 0; a < W; ++a, gn += 5) {
+      for (int a = 0; a < W; ++a, gn += kBandValues) {
         const double wN = w * wx[a] * wy[b];
         for (int f = 0; f < proj.values; ++f) gn[f] += wN * values[f];
         if (proj.volume_weighted) gn[3] += wN;
@@ -142,7 +142,7 @@ void Engine::nodal_remedy_row(int j) {
   const NodalProjection proj = nodal_projection(smoothing_);
   double* s = thread_row_sums();
   sum_bands_of_row(j, 4, s);
-  for (int i = bi0_; i < bi1_; ++i, s += 5) {
+  for (int i = box_lo_[0]; i < box_hi_[0]; ++i, s += kBandValues) {
     const std::size_t n = static_cast<std::size_t>(i) + static_cast<std::size_t>(j) * node_row_stride();
     const double weight = proj.volume_weighted ? s[3] : mass_[n];
     const double inv_w = weight > (proj.volume_weighted ? 0.0 : mass_tolerance_) ? 1.0 / weight : 0.0;
