@@ -334,27 +334,26 @@ BaseAcceleration read_base_acceleration(StrictObject& b, const std::map<unsigned
   return out;
 }
 
-/// Sorts deck.particles by id, and deck.particle_affine and deck.particle_pore_pressure (when given) with them.
+/// `rows` in `order` (rows[order[k]] becomes row k); an empty `rows` stays empty.
+template <class Row>
+void permute(std::vector<Row>& rows, const std::vector<std::size_t>& order) {
+  if (rows.empty()) return;
+  std::vector<Row> sorted;
+  sorted.reserve(order.size());
+  for (std::size_t k : order) sorted.push_back(rows[k]);
+  rows = std::move(sorted);
+}
+
+/// Sorts deck.particles by id, and deck.particle_affine(_3d) and deck.particle_pore_pressure (when given) with them.
 void sort_by_id(Deck& deck) {
   std::vector<std::size_t> order(deck.particles.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return deck.particles[a].id < deck.particles[b].id; });
-  std::vector<ParticleRecord> particles;
-  particles.reserve(order.size());
-  for (std::size_t k : order) particles.push_back(deck.particles[k]);
-  deck.particles = std::move(particles);
-  if (deck.particle_pore_pressure) {
-    std::vector<PorePressureRecord> rows;
-    rows.reserve(order.size());
-    for (std::size_t k : order) rows.push_back((*deck.particle_pore_pressure)[k]);
-    deck.particle_pore_pressure = std::move(rows);
-  }
-  if (deck.particle_affine.empty()) return;
-  std::vector<std::array<double, 4>> affine;
-  affine.reserve(order.size());
-  for (std::size_t k : order) affine.push_back(deck.particle_affine[k]);
-  deck.particle_affine = std::move(affine);
+  permute(deck.particles, order);
+  if (deck.particle_pore_pressure) permute(*deck.particle_pore_pressure, order);
+  permute(deck.particle_affine, order);
+  permute(deck.particle_affine_3d, order);
 }
 
 /// external_loading_conditions: gravity, CB-Geo's nodal forces and particle tractions (external_loads.hpp)

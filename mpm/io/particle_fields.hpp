@@ -2,8 +2,9 @@
 // The per-particle arrays a visualiser shows, defined once for every writer (the XDMF datasets of
 // particles<step>.h5 and the VTK PolyData files): names, components and values.
 //
-// Conventions (ParaView's): a vector has 3 components (z = 0 in 2D); a symmetric tensor has 6, in
-// the order xx yy zz xy yz xz. The strain tensor holds tensorial shear components (gamma / 2), so
+// Conventions (ParaView's and VTK's, vtkDataSetAttributes: a 6-component tensor is symmetric): a vector has 3
+// components (z = 0 in 2D, whatever the record holds); a symmetric tensor has 6, in the order xx yy zz xy yz
+// xz (CB-Geo's record order), the same in 2D (yz = xz = 0) and 3D. The strain tensor holds tensorial shear components (gamma / 2), so
 // its eigenvalues are principal strains; the CB-Geo engineering shear strain stays in gamma_xy.
 #include <cstddef>
 #include <cstdint>
@@ -30,16 +31,18 @@ struct ParticleField {
   std::vector<std::int64_t> whole;   ///< n values when integer (always scalar)
 };
 
-/// Particle centres as n x 3 values (z = 0).
-std::vector<double> particle_coordinates(std::span<const ParticleRecord> particles);
+/// Particle centres as n x 3 values (z = 0 on a 2D grid, coord_z on a 3D one).
+std::vector<double> particle_coordinates(std::span<const ParticleRecord> particles, const Grid& grid);
 
 /// Every field, in a fixed order: vectors (velocity, displacement, size), tensors (stress, strain),
-/// scalars (mass, volume, radius, the stress and strain components, epsilon_v, the Mohr-Coulomb state
+/// scalars (mass, volume, radius, the stress and strain components (on a 3D grid also tau_yz, tau_xz,
+/// strain_zz, gamma_yz, gamma_xz, each after its 2D neighbours), epsilon_v, the Mohr-Coulomb state
 /// variables friction, dilation (degrees), cohesion (Pa), pdstrain) and integers (id, material_id,
 /// cell_id, status). A particle whose material has no such state variable shows 0.
 /// `size` is the particle's extent (m): nsize times half the cell size per axis (CB-Geo's natural
-/// size 2/ppd covers 1/ppd of the cell), or sqrt(volume) where nsize is not set; `radius` is half
-/// the side of the square of the same area, the radius ParaView's Point Gaussian representation
+/// size 2/ppd covers 1/ppd of the cell), or the side of the square (2D) or cube (3D) of the volume where nsize is not set (0 along z in 2D); `radius`
+/// is half the side of the square of the same area (3D: of the cube of the same volume), the radius ParaView's
+/// Point Gaussian representation
 /// needs ("Scale by array", shader "Plain square") to show each particle at its true extent.
 std::vector<ParticleField> particle_fields(std::span<const ParticleRecord> particles, const Grid& grid);
 

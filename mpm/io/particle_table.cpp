@@ -257,15 +257,25 @@ std::optional<std::vector<std::array<double, Columns>>> read_rows(const std::fil
 }
 }  // namespace
 
-void write_affine_dataset(std::int64_t file_id, std::span<const std::array<double, 4>> affine, const std::string& shown) {
-  write_rows(file_id, kAffineDataset, affine.empty() ? nullptr : affine.front().data(), affine.size(), 4, shown);
+template <int dim>
+void write_affine_dataset(std::int64_t file_id, std::span<const AffineMatrix<dim>> affine, const std::string& shown) {
+  constexpr std::size_t columns = dim * dim;
+  write_rows(file_id, kAffineDataset, affine.empty() ? nullptr : affine.front().data(), affine.size(), columns, shown);
 }
 
-std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
-                                                                      std::size_t rows) {
-  return read_rows<4>(file, kAffineDataset, rows,
-                      std::to_string(rows) + " x 4 floats (one row per particle of /table)");
+template <int dim>
+std::optional<std::vector<AffineMatrix<dim>>> read_affine_dataset(const std::filesystem::path& file, std::size_t rows) {
+  constexpr std::size_t columns = dim * dim;
+  const std::string layout = dim == 3 ? "the 3 x 3 B_p row by row, a 3D deck" : "B_xx B_xy B_yx B_yy, a 2D deck";
+  return read_rows<columns>(file, kAffineDataset, rows,
+                            std::to_string(rows) + " x " + std::to_string(columns) +
+                                " floats (one row per particle of /table: " + layout + ")");
 }
+
+template void write_affine_dataset<2>(std::int64_t, std::span<const AffineMatrix<2>>, const std::string&);
+template void write_affine_dataset<3>(std::int64_t, std::span<const AffineMatrix<3>>, const std::string&);
+template std::optional<std::vector<AffineMatrix<2>>> read_affine_dataset<2>(const std::filesystem::path&, std::size_t);
+template std::optional<std::vector<AffineMatrix<3>>> read_affine_dataset<3>(const std::filesystem::path&, std::size_t);
 
 void write_friction_memory_dataset(std::int64_t file_id, std::span<const FrictionMemoryRecord> memory,
                                    const std::string& shown) {

@@ -37,18 +37,21 @@ void write_particle_table(const std::filesystem::path& file, std::span<const Par
 std::vector<ParticleRecord> read_particle_table(const std::filesystem::path& file);
 
 /// The APIC affine matrices beside "/table" (this project's extension; CB-Geo's reader opens "/table" only):
-/// a 2-D float64 dataset of rows x 4 columns, B_xx B_xy B_yx B_yy per particle (m^2/s), row k for
-/// particle k of "/table".
+/// a 2-D float64 dataset of rows x dim^2 columns, one row per particle (row k for particle k of "/table"):
+/// B_p row by row (m^2/s), AffineMatrix<dim>: 4 columns B_xx B_xy B_yx B_yy for a 2D deck, 9 for a 3D one.
 inline constexpr const char* kAffineDataset = "apic_affine";
 
-/// Writes kAffineDataset into the open HDF5 file `file_id` (an hid_t, e.g. from write_particle_table's
-/// add_datasets). Throws std::runtime_error naming `shown` on failure.
-void write_affine_dataset(std::int64_t file_id, std::span<const std::array<double, 4>> affine, const std::string& shown);
+/// Writes kAffineDataset (rows x dim^2) into the open HDF5 file `file_id` (an hid_t, e.g. from
+/// write_particle_table's add_datasets). Throws std::runtime_error naming `shown` on failure. Defined for
+/// dim 2 and 3 (dim is not deduced: `write_affine_dataset<3>(...)` for 3D).
+template <int dim = 2>
+void write_affine_dataset(std::int64_t file_id, std::span<const AffineMatrix<dim>> affine, const std::string& shown);
 
-/// Reads kAffineDataset from `file`: std::nullopt when the file has none; common::InputError naming the
-/// file when it is not `rows` x 4 float64 or cannot be read.
-std::optional<std::vector<std::array<double, 4>>> read_affine_dataset(const std::filesystem::path& file,
-                                                                      std::size_t rows);
+/// Reads kAffineDataset of a `dim`-axis deck from `file`: std::nullopt when the file has none;
+/// common::InputError naming the file and the dataset when it is not `rows` x dim^2 float64 (a 2D file on
+/// a 3D deck, or the reverse, among others) or cannot be read. Defined for dim 2 and 3.
+template <int dim = 2>
+std::optional<std::vector<AffineMatrix<dim>>> read_affine_dataset(const std::filesystem::path& file, std::size_t rows);
 
 /// The lagged friction strengths of a run with friction_constraints[].normal_lag (mpm/core/lagged_friction.hpp),
 /// so that a resumed run continues bit for bit (this project's extension, beside "/table"): a 2-D float64

@@ -32,68 +32,108 @@ double percentile(std::vector<double> values, double q) {
 }
 
 SeriesRow summarize_state(long long step, double time, double dt, std::span<const ParticleRecord> particles,
-                          const Grid& grid, const Eigen::Vector2d& gravity) {
+                          const Grid& grid, const Eigen::Vector2d& gravity, double gravity_z) {
   SeriesRow row;
+  row.dim = grid.dim;
   row.step = step;
   row.time = time;
   row.dt = dt;
   row.particle_count = particles.size();
+  const bool three = grid.dim == 3;
   if (particles.empty()) {
-    row.runout_x_p98 = row.height_y_p995 = row.checkerboard_index = std::numeric_limits<double>::quiet_NaN();
+    row.runout_x_p98 = row.height_p995 = row.checkerboard_index = std::numeric_limits<double>::quiet_NaN();
+    if (three) row.runout_y_p98 = row.runout_x_p98;
     return row;
   }
-  std::vector<double> xs, ys;
+  // The vertical coordinate: the grid's last axis.
+  auto up = [&](const ParticleRecord& p) { return three ? p.coord_z : p.coord_y; };
+  std::vector<double> xs, ys, heights;
   xs.reserve(particles.size());
-  ys.reserve(particles.size());
-  double mass = 0, volume = 0, ymin = std::numeric_limits<double>::infinity(), vmax2 = 0;
+  heights.reserve(particles.size());
+  if (three) ys.reserve(particles.size());
+  double mass = 0, volume = 0, lowest = std::numeric_limits<double>::infinity(), vmax2 = 0;
   for (const auto& p : particles) {
     xs.push_back(p.coord_x);
-    ys.push_back(p.coord_y);
-    ymin = std::min(ymin, p.coord_y);
+    if (three) ys.push_back(p.coord_y);
+    heights.push_back(up(p));
+    lowest = std::min(lowest, up(p));
     mass += p.mass;
     volume += p.volume;
-    row.potential_energy -= p.mass * (gravity.x() * p.coord_x + gravity.y() * p.coord_y);
+    double g_dot_x = gravity.x() * p.coord_x + gravity.y() * p.coord_y;
+    if (three) g_dot_x += gravity_z * p.coord_z;
+    row.potential_energy -= p.mass * g_dot_x;
     row.kinetic_energy_x += 0.5 * p.mass * p.velocity_x * p.velocity_x;
     row.kinetic_energy_y += 0.5 * p.mass * p.velocity_y * p.velocity_y;
-    vmax2 = std::max(vmax2, p.velocity_x * p.velocity_x + p.velocity_y * p.velocity_y);
+    double v2 = p.velocity_x * p.velocity_x + p.velocity_y * p.velocity_y;
+    if (three) {
+      row.kinetic_energy_z += 0.5 * p.mass * p.velocity_z * p.velocity_z;
+      v2 += p.velocity_z * p.velocity_z;
+    }
+    vmax2 = std::max(vmax2, v2);
   }
   row.max_speed = std::sqrt(vmax2);
   row.runout_x_p98 = percentile(std::move(xs), 98.0);
-  row.height_y_p995 = percentile(std::move(ys), 99.5);
+  if (three) row.runout_y_p98 = percentile(std::move(ys), 98.0);
+  row.height_p995 = percentile(std::move(heights), 99.5);
 
   // Checkerboard index: shear stress deviation from the cell mean, over rho g H.
-  const int cells_x = std::max(grid.nodes_per_axis[0] - 1, 1), cells_y = std::max(grid.nodes_per_axis[1] - 1, 1);
+  std::array<int, kMaxDim> cells{1, 1, 1};
+  for (int d = 0; d < grid.dim; ++d) cells[d] = std::max(grid.nodes_per_axis[d] - 1, 1);
   auto cell_of = [&](const ParticleRecord& p) {
-    const auto& origin = grid.origin;
-    const auto& h = grid.spacing;
-    const int i = std::clamp(static_cast<int>(std::floor((p.coord_x - origin[0]) / h[0])), 0, cells_x - 1);
-    const int j = std::clamp(static_cast<int>(std::floor((p.coord_y - origin[1]) / h[1])), 0, cells_y - 1);
-    return static_cast<long long>(i) + static_cast<long long>(j) * cells_x;
+    const double x[kMaxDim] = {p.coord_x, p.coord_y, p.coord_z};
+    long long cell = 0;
+    for (int d = grid.dim - 1; d >= 0; --d) {
+      const int i = std::clamp(static_cast<int>(std::floor((x[d] - grid.origin[d]) / grid.spacing[d])), 0, cells[d] - 1);
+      cell = cell * cells[d] + i;
+    }
+    return cell;
   };
-  std::map<long long, std::pair<double, int>> cell_sum;
+  const int shears = three ? 3 : 1;
+  auto shear = [](const ParticleRecord& p, int c) { return c == 0 ? p.tau_xy : c == 1 ? p.tau_yz : p.tau_xz; };
+  std::map<long long, std::pair<std::array<double, 3>, int>> cell_sum;
   for (const auto& p : particles) {
     auto& s = cell_sum[cell_of(p)];
-    s.first += p.tau_xy;
+    for (int c = 0; c < shears; ++c) s.first[c] += shear(p, c);
     s.second += 1;
   }
   double sq = 0;
   for (const auto& p : particles) {
     const auto& s = cell_sum[cell_of(p)];
-    const double d = p.tau_xy - s.first / s.second;
-    sq += d * d;
+    double d2 = 0;
+    for (int c = 0; c < shears; ++c) {
+      const double d = shear(p, c) - s.first[c] / s.second;
+      d2 += d * d;
+    }
+    sq += d2;
   }
   const double rms = std::sqrt(sq / static_cast<double>(particles.size()));
   const double rho = volume > 0 ? mass / volume : 0.0;
-  const double scale = rho * gravity.norm() * (row.height_y_p995 - ymin);
+  const double g = three ? Eigen::Vector3d(gravity.x(), gravity.y(), gravity_z).norm() : gravity.norm();
+  const double scale = rho * g * (row.height_p995 - lowest);
   row.checkerboard_index = scale > 0 ? rms / scale : std::numeric_limits<double>::quiet_NaN();
   return row;
 }
 
-const std::string& series_header() {
-  static const std::string header =
-      "step,time,runout_x_p98,height_y_p995,potential_energy,kinetic_energy_x,kinetic_energy_y,max_speed,"
-      "n_particles,dt,checkerboard_index";
+namespace {
+/// The columns of series.csv for a grid of `dim` axes.
+std::vector<std::string> series_columns(int dim) {
+  if (dim == 3)
+    return {"step", "time", "runout_x_p98", "runout_y_p98", "height_z_p995", "potential_energy", "kinetic_energy_x",
+            "kinetic_energy_y", "kinetic_energy_z", "max_speed", "n_particles", "dt", "checkerboard_index"};
+  return {"step", "time", "runout_x_p98", "height_y_p995", "potential_energy", "kinetic_energy_x", "kinetic_energy_y",
+          "max_speed", "n_particles", "dt", "checkerboard_index"};
+}
+
+std::string join_columns(int dim) {
+  std::string header;
+  for (const auto& c : series_columns(dim)) header += (header.empty() ? "" : ",") + c;
   return header;
+}
+}  // namespace
+
+const std::string& series_header(int dim) {
+  static const std::string header2 = join_columns(2), header3 = join_columns(3);
+  return dim == 3 ? header3 : header2;
 }
 
 namespace {
@@ -101,9 +141,12 @@ namespace {
 std::string format_row(const SeriesRow& r) {
   std::ostringstream os;
   os.precision(12);
-  os << r.step << ',' << r.time << ',' << r.runout_x_p98 << ',' << r.height_y_p995 << ',' << r.potential_energy << ','
-     << r.kinetic_energy_x << ',' << r.kinetic_energy_y << ',' << r.max_speed << ',' << r.particle_count << ',' << r.dt
-     << ',' << r.checkerboard_index;
+  const bool three = r.dim == 3;
+  os << r.step << ',' << r.time << ',' << r.runout_x_p98 << ',';
+  if (three) os << r.runout_y_p98 << ',';
+  os << r.height_p995 << ',' << r.potential_energy << ',' << r.kinetic_energy_x << ',' << r.kinetic_energy_y;
+  if (three) os << ',' << r.kinetic_energy_z;
+  os << ',' << r.max_speed << ',' << r.particle_count << ',' << r.dt << ',' << r.checkerboard_index;
   return os.str();
 }
 
@@ -115,7 +158,7 @@ void write_xdmf_datasets(hid_t file, std::span<const ParticleRecord> ps, const G
   if (group < 0) throw std::runtime_error(name + ": cannot create group /xdmf");
   const hsize_t n = ps.size();
   bool ok = true;
-  const std::vector<double> xyz = particle_coordinates(ps);
+  const std::vector<double> xyz = particle_coordinates(ps, grid);
   const hsize_t dims3[2] = {n, 3};
   ok = ok && H5LTmake_dataset_double(group, "coordinates", 2, dims3, xyz.data()) >= 0;
   // Polyvertex connectivity 0..n-1 (explicit, so readers that do not default it still read the grid).
@@ -193,21 +236,25 @@ void ResultsWriter::prepare() {
   if (auto start = read_start_frame(); start && start->step <= last) frames_.push_back(*start);
   std::ifstream in(folder_ / "series.csv");
   std::string line;
-  if (!in || !std::getline(in, line) || line != series_header()) return;
+  if (!in || !std::getline(in, line) || line != series_header(deck_.grid.dim)) return;
+  // The columns after step and time, and where n_particles is among them (series_header).
+  const std::vector<std::string> names = series_columns(deck_.grid.dim);
+  const std::size_t columns = names.size() - 2;
+  const auto count_column = static_cast<std::size_t>(std::find(names.begin(), names.end(), "n_particles") - names.begin()) - 2;
   while (std::getline(in, line)) {
     std::istringstream fields(line);
     std::string step_s, time_s, field;
     if (!std::getline(fields, step_s, ',') || !std::getline(fields, time_s, ',')) continue;
     std::vector<std::string> rest;
     while (std::getline(fields, field, ',')) rest.push_back(field);
-    if (rest.size() != 9) continue;
+    if (rest.size() != columns) continue;
     try {
       const long long step = std::stoll(step_s);
       if (step > last) continue;
       rows_.push_back(line);
       row_steps_.push_back(step);
       if (step % deck_.output.output_steps == 0 && fs::exists(particle_file(step)))
-        frames_.push_back({step, std::stod(time_s), static_cast<std::size_t>(std::stoull(rest[6])),
+        frames_.push_back({step, std::stod(time_s), static_cast<std::size_t>(std::stoull(rest[count_column])),
                            particle_file_name(step, deck_.analysis.nsteps)});
     } catch (const std::exception&) {
       continue;  // a malformed row of an earlier run is dropped
@@ -246,7 +293,7 @@ void ResultsWriter::add_frame(const XdmfFrame& frame, std::span<const ParticleRe
   std::sort(frames_.begin(), frames_.end(), [](const auto& a, const auto& b) { return a.step < b.step; });
   if (writes_vtk()) {
     const std::vector<ParticleField> fields = vtk_fields(particles, deck_);
-    write_particles_vtp(folder_ / vtp_name(frame.file), particle_coordinates(particles), fields);
+    write_particles_vtp(folder_ / vtp_name(frame.file), particle_coordinates(particles, deck_.grid), fields);
     std::vector<PvdEntry> entries;
     for (const auto& f : frames_)
       if (fs::exists(folder_ / vtp_name(f.file))) entries.push_back({f.time, vtp_name(f.file)});
@@ -287,7 +334,8 @@ void ResultsWriter::write_particles(long long step, double time, std::span<const
   const fs::path file = particle_file(step);
   write_particle_table(file, particles, [&](std::int64_t id) {
     write_xdmf_datasets(static_cast<hid_t>(id), particles, deck_.grid, file.string());
-    if (!extras.affine.empty()) write_affine_dataset(id, extras.affine, file.string());
+    if (!extras.affine.empty()) write_affine_dataset<2>(id, extras.affine, file.string());
+    if (!extras.affine_3d.empty()) write_affine_dataset<3>(id, extras.affine_3d, file.string());
     if (extras.friction_memory) write_friction_memory_dataset(id, *extras.friction_memory, file.string());
     if (deck_.particle_pore_pressure)
       write_pore_pressure_dataset(id, carried_pore_pressure(deck_, particles), file.string());
@@ -299,13 +347,13 @@ void ResultsWriter::write_output(long long step, double time, double dt, std::sp
                                  const ParticleFileExtras& extras) {
   prepare();
   if (deck_.output.writes_particles(step)) write_particles(step, time, particles, extras);
-  add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
+  add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity, deck_.analysis.gravity_z));
   write_series();
 }
 
 void ResultsWriter::write_series_row(long long step, double time, double dt, std::span<const ParticleRecord> particles) {
   prepare();
-  add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity));
+  add_row(summarize_state(step, time, dt, particles, deck_.grid, deck_.analysis.gravity, deck_.analysis.gravity_z));
   write_series();
 }
 
@@ -318,7 +366,7 @@ fs::path ResultsWriter::write_state(long long step, double time, std::span<const
 
 void ResultsWriter::write_series() const {
   common::AtomicTextFile out(folder_ / "series.csv");
-  out.stream() << series_header() << '\n';
+  out.stream() << series_header(deck_.grid.dim) << '\n';
   for (const auto& r : rows_) out.stream() << r << '\n';
   out.commit();
 }

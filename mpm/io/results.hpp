@@ -24,33 +24,43 @@
 namespace mpm::io {
 
 /// One row of series.csv, computed from a particle state alone (so a resumed run writes the same
-/// rows as the uninterrupted one).
+/// rows as the uninterrupted one). The vertical axis is the grid's last one (y in 2D, z in 3D: CB-Geo's
+/// 3D decks hang gravity on z); the horizontal ones are the others.
 struct SeriesRow {
+  int dim = 2;                    ///< the grid's dimension: which columns the row has (series_header)
   long long step = 0;
   double time = 0;                ///< s
   double runout_x_p98 = 0;        ///< runout L: 98th percentile of particle x, m (numpy's linear percentile)
-  double height_y_p995 = 0;       ///< height H: 99.5th percentile of particle y, m
-  double potential_energy = 0;    ///< -sum m (g . x), J per metre (= sum m |g| y for g = (0, -|g|))
-  double kinetic_energy_x = 0;    ///< sum 1/2 m vx^2, J per metre
-  double kinetic_energy_y = 0;    ///< sum 1/2 m vy^2, J per metre
+  double runout_y_p98 = 0;        ///< 3D only: 98th percentile of particle y, m
+  double height_p995 = 0;         ///< height H: 99.5th percentile of the particles' vertical coordinate, m
+  double potential_energy = 0;    ///< -sum m (g . x), J (per metre in 2D; = sum m |g| y for g = (0, -|g|))
+  double kinetic_energy_x = 0;    ///< sum 1/2 m vx^2, J (per metre in 2D)
+  double kinetic_energy_y = 0;    ///< sum 1/2 m vy^2
+  double kinetic_energy_z = 0;    ///< 3D only: sum 1/2 m vz^2
   double max_speed = 0;           ///< max |v|, m/s
   std::size_t particle_count = 0;
   double dt = 0;                  ///< s
-  /// Checkerboard index (dimensionless): the RMS over particles of (tau_xy of the particle minus the
-  /// mean tau_xy of the particles in its grid cell), divided by rho |g| H_col, where rho = sum m /
-  /// sum V, H_col = height_y_p995 - min y (the current column height) and the cell is the lattice cell
-  /// holding the particle's centre. 0 for a smooth field; NaN when rho |g| H_col = 0 (no gravity).
+  /// Checkerboard index (dimensionless): the RMS over particles of the deviation of the particle's shear
+  /// stresses (tau_xy; in 3D the vector tau_xy, tau_yz, tau_xz) from their mean over the particles in its
+  /// grid cell, divided by rho |g| H_col, where rho = sum m / sum V, H_col = height_p995 - the lowest
+  /// vertical coordinate (the current column height) and the cell is the lattice cell holding the
+  /// particle's centre. 0 for a smooth field; NaN when rho |g| H_col = 0 (no gravity).
   double checkerboard_index = 0;
 };
 
 /// numpy.percentile(values, q) with its default linear interpolation; values is reordered.
 double percentile(std::vector<double> values, double q);
 
+/// The row of `particles` on `grid`; gravity (m/s2) is (gravity.x, gravity.y, gravity_z), gravity_z
+/// counting on a 3D grid only (Analysis::gravity, Analysis::gravity_z).
 SeriesRow summarize_state(long long step, double time, double dt, std::span<const ParticleRecord> particles,
-                          const Grid& grid, const Eigen::Vector2d& gravity);
+                          const Grid& grid, const Eigen::Vector2d& gravity, double gravity_z = 0);
 
-/// The CSV header of series.csv.
-const std::string& series_header();
+/// The CSV header of series.csv for a grid of `dim` axes. 2D: step, time, runout_x_p98, height_y_p995,
+/// potential_energy, kinetic_energy_x, kinetic_energy_y, max_speed, n_particles, dt, checkerboard_index;
+/// 3D: runout_y_p98 after runout_x_p98, height_z_p995 for height_y_p995 and kinetic_energy_z after
+/// kinetic_energy_y.
+const std::string& series_header(int dim = 2);
 
 /// One frame of particles.xdmf (and particles.pvd): a file of the results folder.
 struct XdmfFrame {

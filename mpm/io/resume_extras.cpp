@@ -9,17 +9,24 @@
 namespace mpm::io {
 namespace {
 
-void read_resume_affine(const std::filesystem::path& file, const std::string& rshown, Deck& deck) {
-  if (deck.analysis.transfer != Transfer::APIC) return;
-  auto affine = read_affine_dataset(file, deck.particles.size());
-  if (affine) {
-    deck.particle_affine = std::move(*affine);
+/// The deck's `dim`-axis matrices (`affine`, Deck::particle_affine or particle_affine_3d) from `file`.
+template <int dim>
+void read_resume_affine(const std::filesystem::path& file, const std::string& rshown, Deck& deck,
+                        std::vector<AffineMatrix<dim>>& affine) {
+  if (auto rows = read_affine_dataset<dim>(file, deck.particles.size())) {
+    affine = std::move(*rows);
   } else {
-    deck.particle_affine.clear();
+    affine.clear();
     deck.warnings.push_back(rshown + " has no /" + std::string(kAffineDataset) +
                             " dataset: the APIC transfer resumes from zero affine matrices (not bit for bit the run "
                             "that wrote it, if that run used APIC)");
   }
+}
+
+void read_resume_affine(const std::filesystem::path& file, const std::string& rshown, Deck& deck) {
+  if (deck.analysis.transfer != Transfer::APIC) return;
+  if (deck.grid.dim == 3) read_resume_affine<3>(file, rshown, deck, deck.particle_affine_3d);
+  else read_resume_affine<2>(file, rshown, deck, deck.particle_affine);
 }
 
 void read_resume_friction_memory(const std::filesystem::path& file, const std::string& shown, const std::string& rshown,

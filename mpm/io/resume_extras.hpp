@@ -11,7 +11,9 @@
 namespace mpm::io {
 
 /// On resume, from the resume `file` (named `rshown` in messages; the deck is named `shown`):
-/// - with the APIC transfer, deck.particle_affine from kAffineDataset (rows in deck.particles order). A
+/// - with the APIC transfer, deck.particle_affine (a 2D deck, 4 columns) or deck.particle_affine_3d (a 3D
+///   deck, 9 columns) from kAffineDataset (rows in deck.particles order; another column count is a
+///   common::InputError naming the file and the dataset). A
 ///   file without it (written by CB-Geo, by fem2mpm or by a FLIP / PIC run) resumes from zero matrices,
 ///   with a warning in deck.warnings; other transfers ignore the dataset;
 /// - with a friction_constraints[].normal_lag, deck.friction_memory from kFrictionMemoryDataset; a row

@@ -1,5 +1,6 @@
 #include "mpm/io/vtk_files.hpp"
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <ostream>
@@ -94,36 +95,47 @@ void write_grid_vtr(const fs::path& file, const Deck& deck) {
   const Grid& g = deck.grid;
   const auto& h = g.spacing;
   const std::size_t nodes = g.node_count();
-  std::vector<double> xs(static_cast<std::size_t>(g.nodes_per_axis[0]));
-  std::vector<double> ys(static_cast<std::size_t>(g.nodes_per_axis[1])), zs{0.0};
-  for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = g.origin[0] + static_cast<double>(i) * h[0];
-  for (std::size_t j = 0; j < ys.size(); ++j) ys[j] = g.origin[1] + static_cast<double>(j) * h[1];
-  std::vector<std::int64_t> fixed_x(nodes, 0), fixed_y(nodes, 0), in_mesh(nodes, 0);
+  // The node coordinates per axis; a 2D grid is one layer at z = 0.
+  std::array<std::vector<double>, kMaxDim> axes{std::vector<double>{0.0}, std::vector<double>{0.0},
+                                                std::vector<double>{0.0}};
+  for (int d = 0; d < g.dim; ++d) {
+    auto& c = axes[static_cast<std::size_t>(d)];
+    c.resize(static_cast<std::size_t>(g.nodes_per_axis[d]));
+    for (std::size_t i = 0; i < c.size(); ++i) c[i] = g.origin[d] + static_cast<double>(i) * h[d];
+  }
+  std::array<std::vector<std::int64_t>, kMaxDim> fixed;
+  for (int d = 0; d < g.dim; ++d) fixed[static_cast<std::size_t>(d)].assign(nodes, 0);
+  std::vector<std::int64_t> in_mesh(nodes, 0);
   std::vector<double> friction(nodes, 0.0);
   for (const auto& c : deck.velocity_constraints)
-    for (int node : c.nodes) (c.dir == 0 ? fixed_x : fixed_y)[static_cast<std::size_t>(node)] = 1;
+    for (int node : c.nodes) fixed[static_cast<std::size_t>(c.dir)][static_cast<std::size_t>(node)] = 1;
   for (const auto& c : deck.friction_constraints)
     for (int node : c.nodes) friction[static_cast<std::size_t>(node)] = c.friction;
   constexpr double kTol = 1e-9;
-  for (std::size_t j = 0; j < ys.size(); ++j)
-    for (std::size_t i = 0; i < xs.size(); ++i)
-      in_mesh[i + j * xs.size()] = xs[i] >= g.region_min[0] - kTol * h[0] && xs[i] <= g.region_max[0] + kTol * h[0] &&
-                                   ys[j] >= g.region_min[1] - kTol * h[1] && ys[j] <= g.region_max[1] + kTol * h[1];
+  auto inside = [&](int d, std::size_t i) {
+    const double x = axes[static_cast<std::size_t>(d)][i];
+    return x >= g.region_min[d] - kTol * h[d] && x <= g.region_max[d] + kTol * h[d];
+  };
+  // Node index i + nx (j + ny k) (deck.hpp Grid), k = 0 in 2D.
+  const std::size_t nx = axes[0].size(), ny = axes[1].size();
+  for (std::size_t k = 0; k < axes[2].size(); ++k)
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i)
+        in_mesh[i + nx * (j + ny * k)] = inside(0, i) && inside(1, j) && (g.dim < 3 || inside(2, k));
   std::ostringstream xml;
   AppendedData data;
-  const std::string extent =
-      "0 " + std::to_string(g.nodes_per_axis[0] - 1) + " 0 " + std::to_string(g.nodes_per_axis[1] - 1) + " 0 0";
+  std::string extent;
+  for (std::size_t d = 0; d < kMaxDim; ++d) extent += (d ? " 0 " : "0 ") + std::to_string(static_cast<long long>(axes[d].size()) - 1);
   xml << kHeader
       << "<VTKFile type=\"RectilinearGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
       << " <RectilinearGrid WholeExtent=\"" << extent << "\">\n  <Piece Extent=\"" << extent << "\">\n   <PointData>\n";
-  data.array<std::int64_t>(xml, "fixed_x", 1, fixed_x);
-  data.array<std::int64_t>(xml, "fixed_y", 1, fixed_y);
+  constexpr const char* kAxisNames[kMaxDim] = {"x", "y", "z"};
+  for (int d = 0; d < g.dim; ++d)
+    data.array<std::int64_t>(xml, std::string("fixed_") + kAxisNames[d], 1, fixed[static_cast<std::size_t>(d)]);
   data.array<double>(xml, "friction", 1, friction);
   data.array<std::int64_t>(xml, "in_mesh", 1, in_mesh);
   xml << "   </PointData>\n   <Coordinates>\n";
-  data.array<double>(xml, "x", 1, xs);
-  data.array<double>(xml, "y", 1, ys);
-  data.array<double>(xml, "z", 1, zs);
+  for (std::size_t d = 0; d < kMaxDim; ++d) data.array<double>(xml, kAxisNames[d], 1, axes[d]);
   xml << "   </Coordinates>\n  </Piece>\n </RectilinearGrid>\n";
   write_file(file, xml.str(), data, "</VTKFile>\n");
 }

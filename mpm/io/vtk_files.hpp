@@ -26,9 +26,10 @@ struct PvdEntry {
 /// A ParaView data collection: one dataset per time.
 void write_pvd(const std::filesystem::path& file, std::span<const PvdEntry> entries);
 
-/// The background grid of `deck` (its lattice nodes, halo ring included) with node arrays
-/// fixed_x, fixed_y (1 where a velocity constraint holds that component), friction (the Coulomb
-/// coefficient of a friction constraint, 0 elsewhere) and in_mesh (1 inside the mesh region).
+/// The background grid of `deck` (its lattice nodes, halo ring included; a 2D grid is one layer at z = 0,
+/// extent 0 0 along z) with node arrays fixed_x, fixed_y and, on a 3D grid, fixed_z (1 where a velocity
+/// constraint holds that component), friction (the Coulomb coefficient of a friction constraint, 0
+/// elsewhere) and in_mesh (1 inside the mesh region, over every axis of the grid).
 void write_grid_vtr(const std::filesystem::path& file, const Deck& deck);
 
 }  // namespace mpm::io

@@ -174,8 +174,11 @@ struct Deck {
   /// area / particles in that cell, mass = density * volume, nsize = 2 / sqrt(particles in the cell).
   std::vector<ParticleRecord> particles;
   /// APIC affine matrices B_p (Bxx, Bxy, Byx, Byy, m^2/s), one per particle in `particles` order; empty:
-  /// all zero (a fresh start, or a resume file without the dataset).
-  std::vector<std::array<double, 4>> particle_affine;
+  /// all zero (a fresh start, a resume file without the dataset, or a 3D deck).
+  std::vector<AffineMatrix<2>> particle_affine;
+  /// As particle_affine for a 3D deck (Grid::dim = 3): the 3 x 3 B_p row by row (AffineMatrix<3>); empty on
+  /// a 2D deck.
+  std::vector<AffineMatrix<3>> particle_affine_3d;
   /// The lagged friction strengths of a resumed run (its file's kFrictionMemoryDataset): the nodes listed
   /// start from them, every other node from its instantaneous normal force; empty: all of them.
   std::vector<FrictionMemoryRecord> friction_memory;

@@ -53,12 +53,19 @@ struct PorePressureRecord {
   bool operator==(const PorePressureRecord&) const = default;
 };
 
+/// An APIC affine matrix B_p of a `dim`-axis problem, row by row (m^2/s): 2D Bxx Bxy Byx Byy; 3D Bxx Bxy Bxz
+/// Byx Byy Byz Bzx Bzy Bzz.
+template <int dim>
+using AffineMatrix = std::array<double, static_cast<std::size_t>(dim * dim)>;
+
 /// What a particle file carries beside CB-Geo's "/table" for a bit-for-bit resume: the APIC matrices
-/// (empty unless the transfer is APIC: none written) and the lagged friction strengths (none without a
-/// normal_lag; with one, written even when no node holds a memory).
+/// (empty unless the transfer is APIC: none written; `affine` for a 2D problem, `affine_3d` for a 3D one,
+/// at most one of them filled) and the lagged friction strengths (none without a normal_lag; with one,
+/// written even when no node holds a memory).
 struct ParticleFileExtras {
-  std::vector<std::array<double, 4>> affine;
+  std::vector<AffineMatrix<2>> affine;
   std::optional<std::vector<FrictionMemoryRecord>> friction_memory;
+  std::vector<AffineMatrix<3>> affine_3d = {};
 };
 
 }  // namespace mpm
