@@ -384,6 +384,15 @@ PrincipalUpdate MohrCoulombReturnMap::apply_principal(const Eigen::Vector3d& sor
   return {pr.stress, pr.region};
 }
 
+PrincipalUpdate mohr_coulomb_return_principal(const Eigen::Vector3d& sorted_trial, const IsotropicElasticity& el,
+                                              const MohrCoulombSurface& surface) {
+  const Planes planes = make_planes(el, surface);
+  if (inside(sorted_trial, surface.sin_phi, surface.cos_phi, surface.strength, planes.tension))
+    return {sorted_trial, ReturnRegion::Elastic};
+  const PrincipalResult pr = principal_return(planes, sorted_trial, el.shear_modulus, nullptr);
+  return {pr.stress, pr.region};
+}
+
 MohrCoulombUpdate MohrCoulombReturnMap::apply(const PlaneStrainStress& trial) const {
   if (admits(trial)) return {trial, Eigen::Vector4d::Zero(), ReturnRegion::Elastic};
   return apply_plastic(trial);

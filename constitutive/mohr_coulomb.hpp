@@ -224,6 +224,12 @@ class MohrCoulombReturnMap {
   bool tension_ = false;
 };
 
+/// MohrCoulombReturnMap::apply_principal without a map (each active-set candidate's matrix formed when it
+/// is tried, as mohr_coulomb_return; the same result bit for bit): for a strength that changes from point to
+/// point (CB-Geo's softening, mpm/core/materials_3d.hpp), where a map per point would allocate.
+PrincipalUpdate mohr_coulomb_return_principal(const Eigen::Vector3d& sorted_trial,
+                                              const IsotropicElasticity& elasticity, const MohrCoulombSurface& surface);
+
 /// Consistent (algorithmic) tangent d(sxx, syy, szz, sxy) / d(exx, eyy, gxy) of the update at this trial stress
 /// ([SPO] sec. 8.2 in principal space, mapped back with the spin term of [SPO] Appendix A).
 Eigen::Matrix<double, 4, 3> mohr_coulomb_tangent_4x3(const PlaneStrainStress& trial_stress,

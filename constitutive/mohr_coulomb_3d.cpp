@@ -32,6 +32,28 @@ Stress6 on_principal_axes(const Eigen::Matrix3d& axes, const Eigen::Vector3d& va
   return out;
 }
 
+namespace {
+/// The return of `trial` on its principal axes: `principal` maps the sorted principal values to the
+/// returned ones (PrincipalUpdate); the plastic strain increment from the stress correction.
+template <class PrincipalReturn>
+MohrCoulombUpdate3D return_on_principal_axes(const Stress6& trial, const IsotropicElasticity& el,
+                                             const PrincipalReturn& principal) {
+  const PrincipalStresses p = principal_stresses(trial);
+  const PrincipalUpdate pu = principal(p.sorted);
+  if (pu.region == ReturnRegion::Elastic) return {trial, Strain6::Zero(), ReturnRegion::Elastic};
+  MohrCoulombUpdate3D up;
+  up.stress = on_principal_axes(p.axes, pu.stress);
+  up.region = pu.region;
+  // The total strain is fixed, so the plastic strain increment is C (trial - stress) ([SPO] sec. 8.2).
+  const Stress6 ds = trial - up.stress;
+  const double mean = (ds[0] + ds[1] + ds[2]) / 3.0;
+  const double g2 = 2.0 * el.shear_modulus, k3 = 3.0 * el.bulk_modulus;
+  for (int i = 0; i < 3; ++i) up.plastic_strain_increment[i] = (ds[i] - mean) / g2 + mean / k3;
+  for (int i = 3; i < 6; ++i) up.plastic_strain_increment[i] = ds[i] / el.shear_modulus;
+  return up;
+}
+}  // namespace
+
 MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial, const MohrCoulombReturnMap& map) {
   // Most points are elastic: their test takes the eigenvalues alone, in closed form (the trigonometric
   // solution, ~4x cheaper than the iterative one), and passes only with a margin of 1e-10 of the stress
@@ -44,20 +66,15 @@ MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial, const MohrCoulo
     if (map.strictly_admits(Extremes<double>{v[2] + margin, v[0] - margin}))
       return {trial, Strain6::Zero(), ReturnRegion::Elastic};
   }
-  const PrincipalStresses p = principal_stresses(trial);
-  const PrincipalUpdate pu = map.apply_principal(p.sorted);
-  if (pu.region == ReturnRegion::Elastic) return {trial, Strain6::Zero(), ReturnRegion::Elastic};
-  MohrCoulombUpdate3D up;
-  up.stress = on_principal_axes(p.axes, pu.stress);
-  up.region = pu.region;
-  // The total strain is fixed, so the plastic strain increment is C (trial - stress) ([SPO] sec. 8.2).
-  const Stress6 ds = trial - up.stress;
-  const IsotropicElasticity& el = map.elasticity();
-  const double mean = (ds[0] + ds[1] + ds[2]) / 3.0;
-  const double g2 = 2.0 * el.shear_modulus, k3 = 3.0 * el.bulk_modulus;
-  for (int i = 0; i < 3; ++i) up.plastic_strain_increment[i] = (ds[i] - mean) / g2 + mean / k3;
-  for (int i = 3; i < 6; ++i) up.plastic_strain_increment[i] = ds[i] / el.shear_modulus;
-  return up;
+  return return_on_principal_axes(trial, map.elasticity(),
+                                  [&](const Eigen::Vector3d& sorted) { return map.apply_principal(sorted); });
+}
+
+MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial, const IsotropicElasticity& el,
+                                           const MohrCoulombSurface& surface) {
+  return return_on_principal_axes(trial, el, [&](const Eigen::Vector3d& sorted) {
+    return mohr_coulomb_return_principal(sorted, el, surface);
+  });
 }
 
 MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial, const IsotropicElasticity& el,

@@ -57,6 +57,10 @@ MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial_stress, const Mo
 /// The same for one call (forms the return map: callers with many points keep one per material).
 MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial_stress, const IsotropicElasticity& elasticity,
                                            const MohrCoulombStrength& strength);
+/// The same without a return map (no allocation; the elastic test on the iteratively computed principal
+/// values): for a strength that changes from point to point (softening).
+MohrCoulombUpdate3D mohr_coulomb_return_3d(const Stress6& trial_stress, const IsotropicElasticity& elasticity,
+                                           const MohrCoulombSurface& surface);
 /// Elastic predictor + return.
 MohrCoulombUpdate3D mohr_coulomb_update_3d(const Stress6& stress, const Strain6& dstrain,
                                            const IsotropicElasticity& elasticity, const MohrCoulombStrength& strength);

@@ -14,8 +14,8 @@ double shear_modulus(const MaterialSpec& s) { return s.youngs_modulus / (2.0 * (
 
 LinearElastic LinearElastic::from(const MaterialSpec& spec) { return {bulk_modulus(spec), shear_modulus(spec)}; }
 
-MohrCoulomb MohrCoulomb::from(const MaterialSpec& spec) {
-  MohrCoulomb m;
+MohrCoulombParameters MohrCoulombParameters::from(const MaterialSpec& spec) {
+  MohrCoulombParameters m;
   m.bulk = bulk_modulus(spec);
   m.shear = shear_modulus(spec);
   m.stiffness = constitutive::PlaneStrainStiffness({m.bulk, m.shear});
@@ -39,7 +39,7 @@ MohrCoulomb MohrCoulomb::from(const MaterialSpec& spec) {
   return m;
 }
 
-void MohrCoulomb::initial_state(double* svars) const {
+void MohrCoulombParameters::initial_state(double* svars) const {
   // CB-Geo initialise_state_variables: peak strength, zero invariants, zero pdstrain.
   svars[0] = phi_peak;
   svars[1] = psi_peak;
@@ -47,9 +47,8 @@ void MohrCoulomb::initial_state(double* svars) const {
   svars[3] = svars[4] = svars[5] = svars[6] = 0.0;
 }
 
-void MohrCoulomb::update_general(double* stress, const double* dstrain, double* svars) const {
+void MohrCoulombParameters::soften(double* svars) const {
   const double pdstrain = svars[6];
-  // Linear softening over pdstrain (CB-Geo mohr_coulomb.tcc, compute_stress, before the predictor).
   if (softening && pdstrain > pdstrain_peak) {
     if (pdstrain < pdstrain_residual) {
       const double t = (pdstrain - pdstrain_residual) / (pdstrain_peak - pdstrain_residual);
@@ -62,38 +61,40 @@ void MohrCoulomb::update_general(double* stress, const double* dstrain, double* 
       svars[2] = c_residual;
     }
   }
-  const constitutive::PlaneStrainStress s = Eigen::Map<const Eigen::Vector4d>(stress);
-  const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
-  const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, stiffness);
+}
+
+constitutive::MohrCoulombSurface MohrCoulombParameters::surface_of(const double* svars) const {
   const constitutive::MohrCoulombStrength strength{svars[0], svars[1], svars[2], tension_cutoff};
   const auto has_angles_of = [&](const constitutive::MohrCoulombSurface& cached) {
     return strength.friction == cached.strength.friction && strength.dilation == cached.strength.dilation;
   };
+  constitutive::MohrCoulombSurface surface;
+  if (has_angles_of(peak_surface)) {
+    surface = peak_surface;
+  } else if (has_angles_of(residual_surface)) {
+    surface = residual_surface;
+  } else {
+    surface = constitutive::MohrCoulombSurface(strength);
+  }
+  surface.strength = strength;  // the trigonometry depends on the angles only
+  return surface;
+}
+
+void MohrCoulomb::update_general(double* stress, const double* dstrain, double* svars) const {
+  soften(svars);  // CB-Geo mohr_coulomb.tcc, compute_stress: the strength before the predictor
+  const constitutive::PlaneStrainStress s = Eigen::Map<const Eigen::Vector4d>(stress);
+  const constitutive::PlaneStrainStrain de = Eigen::Map<const Eigen::Vector3d>(dstrain);
+  const constitutive::PlaneStrainStress trial = constitutive::elastic_trial(s, de, stiffness);
   // The maps were built from peak_surface and residual_surface: their strengths, without a call.
-  const constitutive::MohrCoulombReturnMap* map =
-      has_strength_of(peak_map, peak_surface, svars)
-          ? &peak_map
-          : (has_strength_of(residual_map, residual_surface, svars) ? &residual_map : nullptr);
+  const constitutive::MohrCoulombReturnMap* map = map_of(svars);
   if (map != nullptr && map->admits(trial)) {  // elastic: the trial stands, the state is unchanged
     Eigen::Map<Eigen::Vector4d> out(stress);
     out = trial;
     return;
   }
-  constitutive::MohrCoulombUpdate r;
-  if (map != nullptr) {
-    r = map->apply_plastic(trial);
-  } else {
-    constitutive::MohrCoulombSurface surface;
-    if (has_angles_of(peak_surface)) {
-      surface = peak_surface;
-    } else if (has_angles_of(residual_surface)) {
-      surface = residual_surface;
-    } else {
-      surface = constitutive::MohrCoulombSurface(strength);
-    }
-    surface.strength = strength;  // the trigonometry depends on the angles only
-    r = constitutive::mohr_coulomb_return(trial, {bulk, shear}, surface);
-  }
+  const constitutive::MohrCoulombUpdate r =
+      map != nullptr ? map->apply_plastic(trial)
+                     : constitutive::mohr_coulomb_return(trial, {bulk, shear}, surface_of(svars));
   store(r, stress, svars);
 }
 
@@ -101,36 +102,18 @@ void MohrCoulomb::store(const constitutive::MohrCoulombUpdate& r, double* stress
   Eigen::Map<Eigen::Vector4d>(stress, 4) = r.stress;
   // svars[3..5] (epsilon, rho, theta) are functions of the stress alone: set_invariants() fills them
   // when the state is written out, not in the hot loop.
-  if (r.region != constitutive::ReturnRegion::Elastic) {
-    const Eigen::Vector4d& dp = r.plastic_strain_increment;
-    const double mean = (dp[0] + dp[1] + dp[2]) / 3.0;
-    const double d0 = dp[0] - mean, d1 = dp[1] - mean, d2 = dp[2] - mean, d3 = 0.5 * dp[3];
-    svars[6] += std::sqrt(2.0 / 3.0 * (d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * d3 * d3));
-  }
+  if (r.region != constitutive::ReturnRegion::Elastic)
+    svars[6] += plastic_deviatoric_strain<1>(r.plastic_strain_increment.data());
 }
 
-void MohrCoulomb::set_invariants(const double* stress, double* svars) {
-  const constitutive::PlaneStrainStress s(stress[0], stress[1], stress[2], stress[3]);
+void MohrCoulombParameters::set_invariants_of(const constitutive::Stress6& s, double* svars) {
   svars[3] = constitutive::haigh_epsilon(s);
   svars[4] = constitutive::haigh_rho(s);
   svars[5] = constitutive::lode_angle(s);
 }
 
-Material Material::from(const MaterialSpec& spec) {
-  Material m;
-  m.type = spec.type;
-  m.id = spec.id;
-  m.density = spec.density;
-  const double k = bulk_modulus(spec), g = shear_modulus(spec);
-  m.p_wave_modulus = k + 4.0 / 3.0 * g;
-  if (spec.type == MaterialType::LinearElastic2D) {
-    m.elastic = LinearElastic::from(spec);
-    m.state_count = LinearElastic::kStateCount;
-  } else {
-    m.mohr_coulomb = MohrCoulomb::from(spec);
-    m.state_count = MohrCoulomb::kStateCount;
-  }
-  return m;
+void MohrCoulomb::set_invariants(const double* stress, double* svars) {
+  set_invariants_of(constitutive::to_stress6(Eigen::Map<const Eigen::Vector4d>(stress)), svars);
 }
 
 }  // namespace mpm::core
