@@ -205,7 +205,15 @@ void Engine::update_material_state(std::size_t k0, std::size_t k1, std::size_t c
     double* s = &nxt_.stress[4 * k];
     const double dv = de[0] + de[1];
     nxt_.volume[k] = cur_.volume[p] * (1.0 + dv);
-    if (dispatch.separated(cur_.material[p], cur_.mass[p], nxt_.volume[k])) std::fill_n(s, 4, 0.0);
+    if (dispatch.separated(cur_.material[p], cur_.mass[p], nxt_.volume[k])) {
+      std::fill_n(s, 4, 0.0);
+      // A separated particle's volume grows no further (it may shrink, and reloads once compacted): pulled
+      // apart by its neighbours' motion it grew without bound, to V = e^872 V0 = inf at 34 s of the tailings
+      // dam's softening run (scripts/tailings_dam/study.py --quick --duration 40), and inf x 0 stress in its
+      // nodal force V sigma grad N made the velocities NaN.
+      if (dispatch.separated(cur_.material[p], cur_.mass[p], cur_.volume[p]))
+        nxt_.volume[k] = std::min(nxt_.volume[k], cur_.volume[p]);
+    }
     nxt_.epsv[k] = cur_.epsv[p] + dv;
     nxt_.exx[k] = cur_.exx[p] + de[0];
     nxt_.eyy[k] = cur_.eyy[p] + de[1];
