@@ -11,30 +11,13 @@
 
 #include "mpm/core/materials.hpp"
 #include "mpm/core/materials_3d.hpp"
+#include "support/mpm_softening_soil.hpp"
 
 namespace {
 
 using namespace mpm::core;
 
-/// The unit tests' soil (tests/unit/mpm/core_materials_test.cpp): 30 -> 20 deg, c 1000 -> 100 Pa.
-mpm::MaterialSpec spec() {
-  mpm::MaterialSpec s;
-  s.type = mpm::MaterialType::MohrCoulomb2D;
-  s.density = 2000;
-  s.youngs_modulus = 1e7;
-  s.poisson_ratio = 0.3;
-  const double d = std::acos(-1.0) / 180;
-  s.friction = 30 * d;
-  s.dilation = 5 * d;
-  s.cohesion = 1000;
-  s.residual_friction = 20 * d;
-  s.residual_cohesion = 100;
-  s.peak_pdstrain = 0.01;
-  s.residual_pdstrain = 0.05;
-  s.tension_cutoff = 50;
-  s.softening = true;
-  return s;
-}
+mpm::MaterialSpec spec() { return mpm_test::softening_soil(mpm::MaterialType::MohrCoulomb2D); }
 
 enum class Case { Elastic, Plastic, Softened };
 

@@ -13,6 +13,7 @@
 #include "constitutive/mohr_coulomb_3d.hpp"
 #include "mpm/core/materials.hpp"
 #include "mpm/core/materials_3d.hpp"
+#include "support/mpm_softening_soil.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -23,26 +24,7 @@ using mpm::core::MohrCoulomb;
 using mpm::core::MohrCoulomb3D;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-/// The plane-strain material tests' soil (core_materials_test.cpp): softening from 30 / 5 deg, c = 1000 Pa
-/// to 20 / 0 deg, c = 100 Pa between pdstrain 0.01 and 0.05, tension cutoff 50 Pa.
-mpm::MaterialSpec mc_spec() {
-  mpm::MaterialSpec s;
-  s.type = mpm::MaterialType::MohrCoulomb3D;
-  s.density = 2000;
-  s.youngs_modulus = 1e7;
-  s.poisson_ratio = 0.3;
-  s.friction = 30 * kDeg;
-  s.dilation = 5 * kDeg;
-  s.cohesion = 1000;
-  s.residual_friction = 20 * kDeg;
-  s.residual_dilation = 0;
-  s.residual_cohesion = 100;
-  s.peak_pdstrain = 0.01;
-  s.residual_pdstrain = 0.05;
-  s.tension_cutoff = 50;
-  s.softening = true;
-  return s;
-}
+mpm::MaterialSpec mc_spec() { return mpm_test::softening_soil(mpm::MaterialType::MohrCoulomb3D); }
 
 Eigen::Matrix3d tensor(const double* v, double shear_factor) {
   Eigen::Matrix3d m;

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "mpm/core/materials.hpp"
+#include "support/mpm_softening_soil.hpp"
 #include "support/tolerance.hpp"
 
 namespace {
@@ -16,25 +17,7 @@ namespace {
 using mpm::core::LinearElastic;
 using mpm::core::MohrCoulomb;
 
-mpm::MaterialSpec mc_spec() {
-  mpm::MaterialSpec s;
-  s.type = mpm::MaterialType::MohrCoulomb2D;
-  s.density = 2000;
-  s.youngs_modulus = 1e7;
-  s.poisson_ratio = 0.3;
-  const double d = std::acos(-1.0) / 180;
-  s.friction = 30 * d;
-  s.dilation = 5 * d;
-  s.cohesion = 1000;
-  s.residual_friction = 20 * d;
-  s.residual_dilation = 0;
-  s.residual_cohesion = 100;
-  s.peak_pdstrain = 0.01;
-  s.residual_pdstrain = 0.05;
-  s.tension_cutoff = 50;
-  s.softening = true;
-  return s;
-}
+mpm::MaterialSpec mc_spec() { return mpm_test::softening_soil(mpm::MaterialType::MohrCoulomb2D); }
 
 TEST(LinearElastic, PlaneStrainHooke) {
   mpm::MaterialSpec s;
