@@ -19,7 +19,7 @@ for:
      issue asks halving the cell to change the runout by less than 5 %.
 Writes study.csv (one row per run), study.png and study.md into --out. Runout: the largest horizontal travel of
 a particle in the --duration after T (scripts/hybrid_run.py's definition); liquefied depth: the deepest particle with
-r_u >= 0.7 below the ground surface at T. --quick: T = 4 and 12 only (liquefied to 17 m and to the pond's base)
+r_u >= 0.7 below the ground surface at T. --quick: T = 4 and 12 only (liquefied to ~16 m and ~22 m)
 and no other cells; `--quick --duration 40` (four 40 s runs, ~6 min on 2 cores) shows the authors' trends
 near rest, which 10 s of early flow hides (README, "A tailings dam through the chain").
 --cells-at T: only the MPM cell's effect, at the transfer time T: 2, 1 and 0.5 m cells with 2 x 2 particles per
