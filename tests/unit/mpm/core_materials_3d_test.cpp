@@ -124,9 +124,9 @@ TEST(MohrCoulomb3D, PlaneStrainPathIsThePlaneStrainMaterial) {
 // radial): from an isotropic p0, axial strain with radial strain -nu times it keeps sigma_r = p0 while
 // elastic, so p = p0 + q / 3. The Mohr-Coulomb surface in triaxial compression is
 //   q = 6 sin(phi) / (3 - sin(phi)) p + 6 c cos(phi) / (3 - sin(phi))
-// (Wood 1990, Soil Behaviour and Critical State Soil Mechanics, eq. 7.2 with M = 6 sin(phi) / (3 - sin(phi));
-// Potts & Zdravkovic 1999, Finite Element Analysis in Geotechnical Engineering: Theory, sec. 7.5), which
-// the path meets at q_f = 2 (p0 sin(phi) + c cos(phi)) / (1 - sin(phi)). The update stays elastic up to
+// (Coulomb's sigma_1 - sigma_3 = (sigma_1 + sigma_3) sin(phi) + 2 c cos(phi) with sigma_1 = p + 2 q / 3,
+// sigma_3 = p - q / 3: the slope M = 6 sin(phi) / (3 - sin(phi)) of critical-state texts), which the path
+// (sigma_3 = p0, q = sigma_1 - p0) meets at q_f = 2 (p0 sin(phi) + c cos(phi)) / (1 - sin(phi)). The update stays elastic up to
 // q_f, and every later state lies on that line, on the triaxial compression edge (sigma_r equal).
 TEST(MohrCoulomb3D, TriaxialCompressionReachesClosedFormDeviator) {
   mpm::MaterialSpec spec = mc_spec();
