@@ -39,17 +39,8 @@ struct LinearShape {
     dw[0] = -1.0;
     dw[1] = 1.0;
   }
-  /// Both axes of a particle: the stencil's first node (bi, bj) and its weights block
-  /// wk = [wx (W), wy (W), dwx / hx (W), dwy / hy (W)] (ih = 1 / h): eval_axes<2>.
-  static void eval_xy(double sx, double sy, double lx, double ly, int max_i, int max_j, double ihx, double ihy,
-                      int& bi, int& bj, double* wk) {
-    int first[2];
-    eval_axes<2>({sx, sy}, {lx, ly}, {max_i, max_j}, {ihx, ihy}, first, wk);
-    bi = first[0];
-    bj = first[1];
-  }
-  /// Every axis of a particle in `dim` dimensions (eval_xy's generalisation for the 3D engine; dim = 2 gives
-  /// eval_xy's values): the stencil's first node per axis and the block wk = [w per axis (W each), then
+  /// Every axis of a particle in `dim` dimensions (the engine's weights pass, 2D and 3D): the stencil's
+  /// first node per axis and the block wk = [w per axis (W each), then
   /// dw / h per axis (W each)]; node (a_0 .. a_dim-1) of the stencil weighs prod_d w_d[a_d].
   template <int dim>
   static void eval_axes(const double (&s)[dim], const double (&l)[dim], const int (&max_cell)[dim],
@@ -59,7 +50,7 @@ struct LinearShape {
       for (int a = 0; a < kWidth; ++a) wk[(dim + d) * kWidth + a] *= ih[d];
     }
   }
-  /// The stencil's first node (bi, bj), as eval_xy finds it.
+  /// The stencil's first node (bi, bj), as eval_axes<2> finds it.
   static void first_node(double sx, double sy, int max_i, int max_j, int& bi, int& bj) {
     bi = cell(sx, max_i);
     bj = cell(sy, max_j);
@@ -131,21 +122,12 @@ struct GimpShape {
     w = lane_select(outside, zero, lane_select(edge, w_edge, one - a));
     dw = lane_select(outside, zero, lane_select(edge, dw_edge, splat<V>(-sgn)));
   }
-  /// Both axes of a particle (see LinearShape::eval_xy), the same values as eval() per axis: each node
-  /// takes only the pieces its position allows (the middle node core or hat, the outer ones hat, edge
-  /// or outside), node()'s expressions. The one exception is a particle of l = 1/2 (nsize = 2) within
-  /// an ulp of a cell's mid-line, where floor(s + 1/2) rounds across it: eval() then meets the
-  /// neighbouring piece, whose value at the shared boundary differs by an ulp. eval_axes<2>.
-  static void eval_xy(double sx, double sy, double lx, double ly, int max_i, int max_j, double ihx, double ihy,
-                      int& bi, int& bj, double* wk) {
-    int first[2];
-    eval_axes<2>({sx, sy}, {lx, ly}, {max_i, max_j}, {ihx, ihy}, first, wk);
-    bi = first[0];
-    bj = first[1];
-  }
-  /// Every axis of a particle in `dim` dimensions (see LinearShape::eval_axes), eval_xy's branch-free lanes:
-  /// two for dim = 2 (eval_xy itself, bit for bit), four for dim = 3 (x, y, z and an idle lane); per axis
-  /// node()'s values, with eval_xy's one exception at l = 1/2.
+  /// Every axis of a particle in `dim` dimensions (see LinearShape::eval_axes) in branch-free lanes: two for
+  /// dim = 2, four for dim = 3 (x, y, z and an idle lane). Per axis the same values as eval(): each node takes
+  /// only the pieces its position allows (the middle node core or hat, the outer ones hat, edge or
+  /// outside), node()'s expressions. The one exception is a particle of l = 1/2 (nsize = 2) within an ulp
+  /// of a cell's mid-line, where floor(s + 1/2) rounds across it: eval() then meets the neighbouring
+  /// piece, whose value at the shared boundary differs by an ulp.
   template <int dim>
   static void eval_axes(const double (&s)[dim], const double (&l)[dim], const int (&/*max_cell*/)[dim],
                         const double (&ih)[dim], int (&first)[dim], double* wk) {
@@ -172,7 +154,7 @@ struct GimpShape {
       }
     }
   }
-  /// The stencil's first node (bi, bj), as eval_xy finds it.
+  /// The stencil's first node (bi, bj), as eval_axes<2> finds it.
   static void first_node(double sx, double sy, int /*max_i*/, int /*max_j*/, int& bi, int& bj) {
     bi = nearest_node(sx) - 1;
     bj = nearest_node(sy) - 1;

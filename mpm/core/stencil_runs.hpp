@@ -20,8 +20,8 @@ namespace mpm::core {
 
 // Shape functions of a run, one axis at a time.
 
-/// eval_xy for the four particles of a stencil run (one stencil, first node base on this axis): one
-/// axis, the particle l in lane l, each lane eval_xy's expressions (its values bit for bit). s, l:
+/// eval_axes<2> for the four particles of a stencil run (one stencil, first node base on this axis): one
+/// axis, the particle l in lane l, each lane eval_axes<2>'s expressions (its values bit for bit). s, l:
 /// the particles' lattice coordinates and half-sizes on the axis; weights and gradients (times ih)
 /// to w[a], dw[a].
 inline void eval_run_axis(GimpShape, Double4 s, Double4 l, int base, double ih, Double4 w[GimpShape::kWidth],
@@ -33,7 +33,7 @@ inline void eval_run_axis(GimpShape, Double4 s, Double4 l, int base, double ih, 
   for (int a = 0; a < GimpShape::kWidth; ++a) dw[a] *= ih;
 }
 
-/// eval_xy for the four particles of a stencil run (one cell, first node `base` on this axis), lane
+/// eval_axes<2> for the four particles of a stencil run (one cell, first node `base` on this axis), lane
 /// by lane eval's expressions: see eval_run_axis(GimpShape).
 inline void eval_run_axis(LinearShape, Double4 s, Double4 /*l*/, int base, double ih, Double4 w[LinearShape::kWidth],
                           Double4 dw[LinearShape::kWidth]) {

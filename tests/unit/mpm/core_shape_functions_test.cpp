@@ -64,18 +64,19 @@ TEST(ShapeFunctions, GimpTendsToLinearForPointParticles) {
   }
 }
 
-// The engine evaluates both axes at once without branches (GimpShape::node2 / eval_xy, two lanes):
+// The engine evaluates both axes at once without branches (GimpShape::node2 / eval_axes<2>, two lanes):
 // the weights and gradients must be eval()'s per axis bit for bit, in every piece of the function
 // (outside, edge, hat, core), on the piece boundaries and at both signs of r.
 template <class Shape>
-void check_eval_xy_matches_eval(double lx, double ly) {
+void check_eval_axes_matches_eval(double lx, double ly) {
   constexpr int W = Shape::kWidth;
   const double ihx = 1.0 / 0.7, ihy = 1.0 / 1.3;
   for (double s = 1.0; s <= 4.0; s += 0.0037) {
     const double sx = s, sy = 5.0 - 0.61 * s;
-    int bi = 0, bj = 0, ex = 0, ey = 0;
+    int first[2] = {0, 0}, ex = 0, ey = 0;
     double wk[4 * W], wx[W], dwx[W], wy[W], dwy[W];
-    Shape::eval_xy(sx, sy, lx, ly, 10, 10, ihx, ihy, bi, bj, wk);
+    Shape::template eval_axes<2>({sx, sy}, {lx, ly}, {10, 10}, {ihx, ihy}, first, wk);
+    const int bi = first[0], bj = first[1];
     Shape::eval(sx, lx, 10, ex, wx, dwx);
     Shape::eval(sy, ly, 10, ey, wy, dwy);
     ASSERT_EQ(bi, ex);
@@ -90,8 +91,8 @@ void check_eval_xy_matches_eval(double lx, double ly) {
 }
 
 TEST(ShapeFunctions, BothAxesAtOnceGiveTheSameWeightsBitForBit) {
-  check_eval_xy_matches_eval<LinearShape>(0.0, 0.0);
-  for (double l : {0.05, 0.125, 0.25, 0.5}) check_eval_xy_matches_eval<GimpShape>(l, 0.5 * l);
+  check_eval_axes_matches_eval<LinearShape>(0.0, 0.0);
+  for (double l : {0.05, 0.125, 0.25, 0.5}) check_eval_axes_matches_eval<GimpShape>(l, 0.5 * l);
   // Each piece and its boundaries, both signs: the two-lane node functions against node, lane by lane
   // (the middle node for |r| <= 1/2, an outer node beyond, on either side).
   for (double l : {0.125, 0.5})
@@ -138,7 +139,7 @@ TEST(ShapeFunctions, LinearClampsToTheLastCell) {
   EXPECT_CLOSE(w[1], 1.0, 1e-15, 0);
 }
 
-// The dimension-generic evaluation (eval_axes<dim>, for the 3D engine of issue 37; eval_xy is eval_axes<2>):
+// The dimension-generic evaluation (eval_axes<dim>, for the 3D engine of issue 37):
 // in 2D and 3D eval()'s values per axis (bit for bit away from l = 1/2's mid-line ulp), and the 27- (uGIMP)
 // or 8-node (linear) tensor-product stencil a partition of unity that reproduces linear fields and their
 // gradients: sum N = 1, sum grad N = 0, sum N x_i = x_p, sum x_i (x) grad N_i = I.
@@ -149,7 +150,7 @@ void check_eval_axes(double l) {
   const double ih[3] = {1.0 / h[0], 1.0 / h[1], 1.0 / h[2]};
   const int max_cell[3] = {10, 10, 10};
   for (double t = 1.0; t <= 4.0; t += 0.0137) {
-    // 2D: eval() per axis (eval_xy is eval_axes<2>; BothAxesAtOnce checks it on the piece boundaries).
+    // 2D: eval() per axis (BothAxesAtOnce checks it on the piece boundaries).
     {
       const double s2[2] = {t, 5.0 - 0.61 * t}, l2[2] = {l, 0.5 * l}, ih2[2] = {ih[0], ih[1]};
       const int max2[2] = {10, 10};

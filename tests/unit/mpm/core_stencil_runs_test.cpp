@@ -38,12 +38,15 @@ Run random_run(std::mt19937& rng) {
   return r;
 }
 
-/// The weights of the run: one block per particle (eval_xy) and interleaved (eval_run_axis).
+/// The weights of the run: one block per particle (eval_axes<2>) and interleaved (eval_run_axis).
 template <class Shape>
 void weights_both_ways(const Run& r, double ihx, double ihy, double* blocks, double* interleaved, int& bi, int& bj) {
   constexpr int W = Shape::kWidth;
+  int first[2] = {0, 0};
   for (int p = 0; p < kLanes; ++p)
-    Shape::eval_xy(r.sx[p], r.sy[p], r.lx[p], r.ly[p], 5, 5, ihx, ihy, bi, bj, blocks + 4 * W * p);
+    Shape::template eval_axes<2>({r.sx[p], r.sy[p]}, {r.lx[p], r.ly[p]}, {5, 5}, {ihx, ihy}, first, blocks + 4 * W * p);
+  bi = first[0];
+  bj = first[1];
   Double4 w[W], dw[W];
   eval_run_axis(Shape{}, Double4{r.sx[0], r.sx[1], r.sx[2], r.sx[3]}, Double4{r.lx[0], r.lx[1], r.lx[2], r.lx[3]}, bi,
                        ihx, w, dw);
